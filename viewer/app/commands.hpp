@@ -1,0 +1,17 @@
+// The subcommands of the `fxview` CLI. Each registers its options on the CLI11 app and returns the
+// callback to run after a successful parse; the callback returns the process exit code.
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <memory>
+
+namespace fxview::app {
+
+using CommandRunner = std::function<int()>;
+
+CommandRunner add_render_command(CLI::App& app);
+CommandRunner add_pick_command(CLI::App& app);
+CommandRunner add_info_command(CLI::App& app);
+
+}  // namespace fxview::app

@@ -1,0 +1,43 @@
+// fxview command line: subcommands for headless rendering, pixel picking and GL information.
+// Exit codes: 0 success, 1 GL / I/O / data failure, 2 bad arguments.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <map>
+
+#include "app/commands.hpp"
+#include "core/error.hpp"
+
+int main(int argc, char** argv) {
+    using namespace fxview;
+    CLI::App app{"fxview - a shader viewer for spectral and physically based materials", "fxview"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "fxview 0.1.0");
+    const std::map<std::string, app::CommandRunner> runners = {
+        {"render", app::add_render_command(app)},
+        {"pick", app::add_pick_command(app)},
+        {"info", app::add_info_command(app)},
+    };
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "fxview: " << e.what() << "\nRun 'fxview --help' or 'fxview COMMAND --help' for usage.\n";
+        return 2;
+    }
+    try {
+        for (const CLI::App* command : app.get_subcommands()) return runners.at(command->get_name())();
+        return 2;
+    } catch (const UsageError& e) {
+        std::cerr << "fxview: " << e.what() << "\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "fxview: error: " << e.what() << "\n";
+        return 1;
+    }
+}

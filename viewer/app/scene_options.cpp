@@ -1,0 +1,62 @@
+#include "app/scene_options.hpp"
+
+#include "app/value_parsing.hpp"
+#include "core/error.hpp"
+#include "math/transform.hpp"
+
+namespace fxview::app {
+
+void add_scene_options(CLI::App& command, SceneOptions& o) {
+    command.add_option("--mesh", o.mesh, "Built-in mesh (sphere, torus, cube, plane, disc, knot) or an .obj file")
+        ->capture_default_str();
+    command.add_option("--size", o.size, "Image size WIDTHxHEIGHT")->capture_default_str();
+    command.add_option("--backend", o.backend, "GL context: egl (headless), osmesa (software) or glfw (window)")
+        ->capture_default_str();
+    command.add_option("--samples", o.samples, "MSAA samples (0 = off)")->check(CLI::Range(0, 32));
+    command.add_option("--debug-view", o.debug_view, "Debug shader: normals, uv, camera or light")->capture_default_str();
+    command.add_option("--camera-distance", o.camera_distance, "Camera Z translation (zoom)")
+        ->check(CLI::Range(0.01f, 1000.0f))
+        ->capture_default_str();
+    command.add_option("--camera-rotate", o.camera_rotate, "Camera rotation X,Y,Z in degrees (orbits the target)");
+    command.add_option("--camera-pan", o.camera_pan, "Camera target X,Y");
+    command.add_option("--fov", o.fov, "Vertical field of view in degrees")->check(CLI::Range(1.0f, 179.0f));
+    command.add_option("--light-position", o.light_position, "Light position X,Y,Z")->capture_default_str();
+    command.add_option("--light-rotate", o.light_rotate, "Light rotation about the origin X,Y,Z in degrees");
+    command.add_option("--object-position", o.object_position, "Object position X,Y,Z");
+    command.add_option("--object-rotate", o.object_rotate, "Object rotation X,Y,Z in degrees");
+    command.add_option("--object-scale", o.object_scale, "Object scale X,Y,Z");
+    command.add_option("--background", o.background, "Clear colour R,G,B,A (linear)");
+    command.add_flag("--gl-debug", o.gl_debug, "Print KHR_debug messages of the driver");
+}
+
+RenderRequest to_render_request(const SceneOptions& o) {
+    RenderRequest request;
+    request.backend = context::parse_backend(o.backend);
+    request.view = render::parse_debug_view(o.debug_view);
+    const glm::ivec2 size = parse_size("--size", o.size);
+    request.width = size.x;
+    request.height = size.y;
+    request.samples = o.samples;
+#ifndef NDEBUG
+    request.gl_debug = true;  // debug builds always check GL errors
+#else
+    request.gl_debug = o.gl_debug;
+#endif
+
+    scene::Scene& scene = request.scene;
+    scene.camera.pose.distance = o.camera_distance;
+    scene.camera.pose.rotation = math::rotation_from_euler_degrees(parse_vec3("--camera-rotate", o.camera_rotate));
+    scene.camera.pose.pan = parse_vec2("--camera-pan", o.camera_pan);
+    scene.camera.fov_y_degrees = o.fov;
+    scene.light.pose.position = parse_vec3("--light-position", o.light_position);
+    scene.light.pose.rotation = math::rotation_from_euler_degrees(parse_vec3("--light-rotate", o.light_rotate));
+    scene::SceneObject& object = scene.objects.front();
+    object.mesh = o.mesh;
+    object.pose.position = parse_vec3("--object-position", o.object_position);
+    object.pose.rotation = math::rotation_from_euler_degrees(parse_vec3("--object-rotate", o.object_rotate));
+    object.scale = parse_vec3("--object-scale", o.object_scale);
+    scene.background = parse_vec4("--background", o.background);
+    return request;
+}
+
+}  // namespace fxview::app

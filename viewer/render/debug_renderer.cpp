@@ -1,0 +1,80 @@
+#include "render/debug_renderer.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "core/error.hpp"
+#include "gl/program.hpp"
+#include "scene/shapes.hpp"
+
+namespace fxview::builtin_shaders {
+extern const std::string_view debug_vert;
+extern const std::string_view debug_frag;
+}  // namespace fxview::builtin_shaders
+
+namespace fxview::render {
+
+DebugView parse_debug_view(std::string_view name) {
+    if (name == "normals") return DebugView::Normals;
+    if (name == "uv") return DebugView::TexCoords;
+    if (name == "camera") return DebugView::ToCamera;
+    if (name == "light") return DebugView::ToLight;
+    throw UsageError("unknown debug view '" + std::string(name) + "' (expected normals, uv, camera or light)");
+}
+
+std::string_view debug_view_name(DebugView view) {
+    switch (view) {
+        case DebugView::Normals: return "normals";
+        case DebugView::TexCoords: return "uv";
+        case DebugView::ToCamera: return "camera";
+        case DebugView::ToLight: return "light";
+    }
+    return "?";
+}
+
+DebugRenderer::DebugRenderer()
+    : program_(gl::link_program({{GL_VERTEX_SHADER, std::string(builtin_shaders::debug_vert), "effects/builtin/debug.vert"},
+                                 {GL_FRAGMENT_SHADER, std::string(builtin_shaders::debug_frag),
+                                  "effects/builtin/debug.frag"}})) {}
+
+const GpuMesh& DebugRenderer::mesh(const std::string& name_or_path) {
+    auto found = meshes_.find(name_or_path);
+    if (found == meshes_.end()) found = meshes_.emplace(name_or_path, GpuMesh(scene::load_mesh(name_or_path))).first;
+    return found->second;
+}
+
+void DebugRenderer::render(const scene::Scene& scene, DebugView view, const gl::RenderTarget& target) {
+    target.bind_for_drawing();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);  // debug views show both sides: open OBJ meshes stay visible
+    glDisable(GL_BLEND);
+    glClearColor(scene.background.r, scene.background.g, scene.background.b, scene.background.a);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+    const float aspect = static_cast<float>(target.width()) / static_cast<float>(target.height());
+    const glm::mat4 view_projection =
+        math::perspective_matrix(scene.camera.fov_y_degrees, aspect, scene.camera.near_plane, scene.camera.far_plane) *
+        math::view_matrix(scene.camera.pose);
+    const GLuint program = program_.get();
+    glUseProgram(program);
+    glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "u_view_projection"), 1, GL_FALSE,
+                              glm::value_ptr(view_projection));
+    glProgramUniform1i(program, glGetUniformLocation(program, "u_mode"), static_cast<int>(view));
+    glProgramUniform3fv(program, glGetUniformLocation(program, "u_camera_position"), 1,
+                        glm::value_ptr(math::camera_world_position(scene.camera.pose)));
+    glProgramUniform3fv(program, glGetUniformLocation(program, "u_light_position"), 1,
+                        glm::value_ptr(scene.light.world_position()));
+    for (const auto& object : scene.objects) {
+        const glm::mat4 world = math::world_matrix(object.pose, object.scale);
+        glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "u_world"), 1, GL_FALSE, glm::value_ptr(world));
+        glProgramUniformMatrix3fv(program, glGetUniformLocation(program, "u_normal_matrix"), 1, GL_FALSE,
+                                  glm::value_ptr(math::normal_matrix(world)));
+        mesh(object.mesh).draw();
+    }
+    glUseProgram(0);
+    target.resolve();
+}
+
+}  // namespace fxview::render

@@ -1,0 +1,33 @@
+// Draws a scene with one of the built-in debug views (normals, texture coordinates, vector to
+// camera, vector to light; seed 002 ch. 4.1) into a render target. Meshes are uploaded once and
+// kept for later frames.
+#pragma once
+#include <map>
+#include <string>
+#include <string_view>
+
+#include "gl/objects.hpp"
+#include "gl/render_target.hpp"
+#include "render/gpu_mesh.hpp"
+#include "scene/scene.hpp"
+
+namespace fxview::render {
+
+enum class DebugView { Normals = 0, TexCoords = 1, ToCamera = 2, ToLight = 3 };
+
+DebugView parse_debug_view(std::string_view name);  // normals|uv|camera|light; UsageError otherwise
+std::string_view debug_view_name(DebugView view);
+
+class DebugRenderer {
+public:
+    DebugRenderer();  // compiles the built-in program; needs a current context
+    void render(const scene::Scene& scene, DebugView view, const gl::RenderTarget& target);
+
+private:
+    const GpuMesh& mesh(const std::string& name_or_path);
+
+    gl::Program program_;
+    std::map<std::string, GpuMesh> meshes_;
+};
+
+}  // namespace fxview::render

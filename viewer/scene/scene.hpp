@@ -1,0 +1,39 @@
+// What is rendered: a camera, one light and objects, each placed independently (seed 002 ch. 4.1).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "math/transform.hpp"
+
+namespace fxview::scene {
+
+struct Camera {
+    math::CameraPose pose;
+    float fov_y_degrees = 45.0f;
+    float near_plane = 0.05f;
+    float far_plane = 100.0f;
+};
+
+// A point light; `pose.rotation` turns its position about the origin (the light is orbited).
+struct Light {
+    math::Pose pose{glm::vec3(2.0f, 2.0f, 3.0f), glm::quat(1.0f, 0.0f, 0.0f, 0.0f)};
+    glm::vec3 color{1.0f};
+    float intensity = 1.0f;
+
+    glm::vec3 world_position() const { return glm::mat3_cast(pose.rotation) * pose.position; }
+};
+
+struct SceneObject {
+    std::string mesh = "sphere";  // built-in name or OBJ path
+    math::Pose pose;
+    glm::vec3 scale{1.0f};
+};
+
+struct Scene {
+    Camera camera;
+    Light light;
+    std::vector<SceneObject> objects{SceneObject{}};
+    glm::vec4 background{0.0f, 0.0f, 0.0f, 0.0f};
+};
+
+}  // namespace fxview::scene
