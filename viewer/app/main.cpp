@@ -18,6 +18,10 @@ int main(int argc, char** argv) {
         {"pick", app::add_pick_command(app)},
         {"info", app::add_info_command(app)},
     };
+    if (argc > 1 && argv[1][0] != '-' && !runners.contains(argv[1])) {
+        std::cerr << "fxview: unknown command '" << argv[1] << "' (expected render, pick or info)\n";
+        return 2;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

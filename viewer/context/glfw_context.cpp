@@ -1,4 +1,5 @@
 // A window with a GL 4.5 core context through GLFW (X11/GLX or Wayland/EGL, as GLFW decides).
+#define GLFW_INCLUDE_NONE  // glad provides the GL declarations
 #include <GLFW/glfw3.h>
 
 #include <string>

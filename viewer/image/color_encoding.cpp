@@ -7,6 +7,7 @@ namespace fxview::image {
 
 float srgb_encode(float linear) {
     const float x = std::clamp(linear, 0.0f, 1.0f);
+    if (x >= 1.0f) return 1.0f;  // the float curve misses 1 by an ulp
     return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
 }
 

@@ -1,5 +1,5 @@
 // Built-in meshes with analytic normals and tangent frames. Every shape faces the default camera
-// (+Z) and fits in the unit sphere: sphere, torus (axis Z), cube, plane (XY), disc (a CD with its
+// (+Z) and fits in the cube [-1,1]^3: sphere, torus (axis Z), cube, plane (XY), disc (a CD with its
 // hole; UV = planar, centre at (0.5, 0.5)) and a (2,3) torus knot as the showcase shape.
 #pragma once
 #include <string>

@@ -1,0 +1,36 @@
+# The two commands of README.md:
+#   make run   - install what is missing, build, render the built-in scene headless to out/*.png
+#   make test  - install what is missing, build, run every test (CTest + doctest)
+BUILD_DIR ?= build
+BUILD_TYPE ?= RelWithDebInfo
+JOBS ?= $(shell nproc)
+FXVIEW = $(BUILD_DIR)/bin/fxview
+MESHES = sphere torus cube plane disc knot
+VIEWS = normals uv camera light
+
+.PHONY: deps build run test clean
+
+deps:
+	./scripts/install-deps.sh
+
+build: deps
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE)
+	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+run: build
+	@mkdir -p out
+	$(FXVIEW) info --backend egl
+	@for mesh in $(MESHES); do \
+	  $(FXVIEW) render --mesh $$mesh --size 512x512 --camera-rotate 20,-30,0 --samples 4 --out out/$$mesh-normals.png || exit 1; \
+	done
+	@for view in $(VIEWS); do \
+	  $(FXVIEW) render --mesh knot --debug-view $$view --size 512x512 --samples 4 --out out/knot-$$view.png || exit 1; \
+	done
+	$(FXVIEW) render --mesh sphere --size 256x256 --out out/sphere-normals.exr
+	$(FXVIEW) pick --mesh sphere --size 256x256 --at 128,128
+
+test: build
+	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+clean:
+	rm -rf $(BUILD_DIR) out

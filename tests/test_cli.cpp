@@ -1,0 +1,151 @@
+// The fxview binary as a user calls it: JSON output parsed and checked, files written and read
+// back, exit code 2 for nonsense arguments and 1 for I/O or data failures, never a crash.
+#include <doctest/doctest.h>
+#include <sys/wait.h>
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "image/image_file.hpp"
+
+namespace {
+
+struct Result {
+    int exit_code = -1;
+    std::string out, err;
+};
+
+std::string temp_path(const std::string& name) {
+    std::filesystem::create_directories(FXVIEW_TEST_TMP);
+    return std::string(FXVIEW_TEST_TMP) + "/" + name;
+}
+
+Result run(const std::string& arguments) {
+    const std::string err_file = temp_path("stderr.txt");
+    const std::string command = std::string(FXVIEW_BINARY) + " " + arguments + " 2>" + err_file;
+    Result result;
+    FILE* pipe = popen(command.c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    std::array<char, 4096> buffer{};
+    size_t count;
+    while ((count = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.out.append(buffer.data(), count);
+    const int status = pclose(pipe);
+    REQUIRE(WIFEXITED(status));  // a signal (crash) fails here
+    result.exit_code = WEXITSTATUS(status);
+    std::ifstream err(err_file);
+    std::stringstream text;
+    text << err.rdbuf();
+    result.err = text.str();
+    return result;
+}
+
+}  // namespace
+
+TEST_CASE("pick --json returns the facing normal at the centre of a sphere") {
+    for (const char* backend : {"egl", "osmesa"}) {
+        CAPTURE(backend);
+        const Result r = run(std::string("pick --at 32,32 --size 64x64 --json --backend ") + backend);
+        REQUIRE(r.exit_code == 0);
+        const auto json = nlohmann::json::parse(r.out);
+        CHECK(json["x"] == 32);
+        CHECK(json["y"] == 32);
+        // Tolerance as in test_render: half a pixel off axis at 64x64 tilts the normal by ~0.013.
+        CHECK(std::abs(json["normal"][0].get<double>()) < 0.02);
+        CHECK(std::abs(json["normal"][1].get<double>()) < 0.02);
+        CHECK(json["normal"][2].get<double>() > 0.98);
+        CHECK(json["rgba"].size() == 4);
+        CHECK(json["rgba"][3].get<double>() == 1.0);
+        // sRGB of the mapped value 0.5 is 188; the blue channel is 1.0 -> 255; alpha 255.
+        const auto rgba8 = json["rgba8"];
+        CHECK(rgba8[2] == 255);
+        CHECK(rgba8[3] == 255);
+        const std::uint32_t packed = rgba8[0].get<std::uint32_t>() | rgba8[1].get<std::uint32_t>() << 8 |
+                                     rgba8[2].get<std::uint32_t>() << 16 | rgba8[3].get<std::uint32_t>() << 24;
+        CHECK(json["packed"].get<std::uint32_t>() == packed);
+    }
+}
+
+TEST_CASE("pick --no-srgb reports linear 8-bit values") {
+    const Result srgb = run("pick --at 32,32 --size 64x64 --json");
+    const Result linear = run("pick --at 32,32 --size 64x64 --json --no-srgb");
+    REQUIRE(srgb.exit_code == 0);
+    REQUIRE(linear.exit_code == 0);
+    const auto a = nlohmann::json::parse(srgb.out), b = nlohmann::json::parse(linear.out);
+    CHECK(a["rgba"] == b["rgba"]);  // the float value does not depend on the display encoding
+    CHECK(a["rgba8"][0].get<int>() > b["rgba8"][0].get<int>());  // sRGB lifts mid-tones (0.5 -> 188 vs 128)
+    CHECK(b["encoding"] == "linear");
+}
+
+TEST_CASE("render writes PNG, EXR and PFM; the float files hold the exact picked values") {
+    const std::string exr = temp_path("cli.exr"), pfm = temp_path("cli.pfm"), png = temp_path("sub/cli.png");
+    std::filesystem::remove_all(temp_path("sub"));
+    REQUIRE(run("render --size 64x48 --out " + exr).exit_code == 0);
+    REQUIRE(run("render --size 64x48 --out " + pfm).exit_code == 0);
+    REQUIRE(run("render --size 64x48 --out " + png).exit_code == 0);  // creates the folder
+    CHECK(std::filesystem::file_size(png) > 100);
+    const auto from_exr = fxview::image::read_float_image(exr);
+    const auto from_pfm = fxview::image::read_float_image(pfm);
+    CHECK(from_exr.width == 64);
+    CHECK(from_exr.height == 48);
+    CHECK(from_exr.data == from_pfm.data);
+    const auto pick = nlohmann::json::parse(run("pick --size 64x48 --at 40,20 --json").out);
+    for (int c = 0; c < 4; ++c) CHECK(from_exr.pixel(40, 20)[c] == pick["rgba"][c].get<float>());
+}
+
+TEST_CASE("info reports a GL 4.5 core context for both headless backends") {
+    for (const char* backend : {"egl", "osmesa"}) {
+        CAPTURE(backend);
+        const Result r = run(std::string("info --json --backend ") + backend);
+        REQUIRE(r.exit_code == 0);
+        const auto json = nlohmann::json::parse(r.out);
+        CHECK(json["core_profile"] == true);
+        CHECK(json["major"].get<int>() * 10 + json["minor"].get<int>() >= 45);
+        CHECK(!json["renderer"].get<std::string>().empty());
+    }
+}
+
+TEST_CASE("nonsense arguments exit with 2 and say what is wrong") {
+    const std::pair<const char*, const char*> cases[] = {
+        {"", "subcommand"},
+        {"frobnicate", "frobnicate"},
+        {"render --backend vulkan", "unknown backend 'vulkan'"},
+        {"render --size 0x64", "--size"},
+        {"render --size banana", "--size"},
+        {"render --samples -3", "--samples"},
+        {"render --mesh dodecahedron", "unknown mesh 'dodecahedron'"},
+        {"render --camera-rotate 1,2", "--camera-rotate"},
+        {"render --debug-view xray", "unknown debug view"},
+        {"render --out picture.gif", "unsupported image type"},
+        {"pick --size 64x64", "--at"},
+        {"pick --size 64x64 --at 64,0", "outside"},
+        {"pick --at 1,2,3", "--at"},
+        {"info --backend metal", "unknown backend"},
+    };
+    for (const auto& [arguments, expected] : cases) {
+        const std::string shown = arguments;
+        CAPTURE(shown);
+        const Result r = run(arguments);
+        CHECK(r.exit_code == 2);
+        CAPTURE(r.err);
+        CHECK(r.err.find(expected) != std::string::npos);
+    }
+}
+
+TEST_CASE("I/O and data failures exit with 1 naming the file") {
+    const std::string missing = temp_path("no-such-mesh.obj");
+    Result r = run("render --mesh " + missing + " --out " + temp_path("x.png"));
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("no-such-mesh.obj") != std::string::npos);
+    const std::string broken = temp_path("broken.obj");
+    std::ofstream(broken) << "v 0 0 0\nf 1 2 3\n";
+    r = run("render --mesh " + broken + " --out " + temp_path("x.png"));
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("broken.obj") != std::string::npos);
+    r = run("render --out /proc/forbidden/x.png");
+    CHECK(r.exit_code == 1);
+}
