@@ -44,6 +44,7 @@ CommandRunner add_pick_command(CLI::App& app) {
                 {"packed", info.packed},
                 {"packed_hex", hex},
                 {"normal", {info.normal.x, info.normal.y, info.normal.z}},
+                {"covered", info.rgba[3] > 0.0f},  // false on the cleared background
             };
             std::cout << out.dump() << "\n";
         } else {
