@@ -16,20 +16,13 @@ const char* stage_name(GLenum stage) {
 
 namespace {
 
-std::string shader_log(GLuint shader) {
+// The info log of a shader or program, read through the matching pair of GL queries.
+std::string info_log(GLuint object, PFNGLGETSHADERIVPROC get_parameter, PFNGLGETSHADERINFOLOGPROC get_log) {
     GLint length = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    std::string log(static_cast<size_t>(length > 0 ? length : 1), '\0');
-    glGetShaderInfoLog(shader, length, nullptr, log.data());
-    log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
-    return log;
-}
-
-std::string program_log(GLuint program) {
-    GLint length = 0;
-    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-    std::string log(static_cast<size_t>(length > 0 ? length : 1), '\0');
-    glGetProgramInfoLog(program, length, nullptr, log.data());
+    get_parameter(object, GL_INFO_LOG_LENGTH, &length);
+    if (length <= 0) return {};
+    std::string log(static_cast<size_t>(length), '\0');
+    get_log(object, length, nullptr, log.data());
     log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
     return log;
 }
@@ -43,7 +36,7 @@ Shader compile(const ShaderSource& source) {
     glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
     if (!ok)
         throw ShaderError(source.label + ": " + stage_name(source.stage) + " shader does not compile:\n" +
-                          shader_log(shader.get()));
+                          info_log(shader.get(), glGetShaderiv, glGetShaderInfoLog));
     return shader;
 }
 
@@ -61,7 +54,7 @@ Program link_program(const std::vector<ShaderSource>& stages) {
     glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
     if (!ok) {
         const std::string label = stages.empty() ? std::string("program") : stages.front().label;
-        throw ShaderError(label + ": program does not link:\n" + program_log(program.get()));
+        throw ShaderError(label + ": program does not link:\n" + info_log(program.get(), glGetProgramiv, glGetProgramInfoLog));
     }
     return program;
 }
