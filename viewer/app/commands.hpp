@@ -13,5 +13,7 @@ using CommandRunner = std::function<int()>;
 CommandRunner add_render_command(CLI::App& app);
 CommandRunner add_pick_command(CLI::App& app);
 CommandRunner add_info_command(CLI::App& app);
+CommandRunner add_list_command(CLI::App& app);
+CommandRunner add_check_command(CLI::App& app);
 
 }  // namespace fxview::app

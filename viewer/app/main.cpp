@@ -17,9 +17,11 @@ int main(int argc, char** argv) {
         {"render", app::add_render_command(app)},
         {"pick", app::add_pick_command(app)},
         {"info", app::add_info_command(app)},
+        {"list", app::add_list_command(app)},
+        {"check", app::add_check_command(app)},
     };
     if (argc > 1 && argv[1][0] != '-' && !runners.contains(argv[1])) {
-        std::cerr << "fxview: unknown command '" << argv[1] << "' (expected render, pick or info)\n";
+        std::cerr << "fxview: unknown command '" << argv[1] << "' (expected render, pick, info, list or check)\n";
         return 2;
     }
     try {

@@ -27,6 +27,7 @@ void add_scene_options(CLI::App& command, SceneOptions& o) {
     command.add_option("--object-scale", o.object_scale, "Object scale X,Y,Z");
     command.add_option("--background", o.background, "Clear colour R,G,B,A (linear)");
     command.add_flag("--gl-debug", o.gl_debug, "Print KHR_debug messages of the driver");
+    add_effect_options(command, o.effect);
 }
 
 RenderRequest to_render_request(const SceneOptions& o) {
@@ -56,6 +57,7 @@ RenderRequest to_render_request(const SceneOptions& o) {
     object.pose.rotation = math::rotation_from_euler_degrees(parse_vec3("--object-rotate", o.object_rotate));
     object.scale = parse_vec3("--object-scale", o.object_scale);
     scene.background = parse_vec4("--background", o.background);
+    request.effect = o.effect;
     return request;
 }
 

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "app/effect_options.hpp"
 #include "context/context.hpp"
 #include "render/debug_renderer.hpp"
 #include "scene/scene.hpp"
@@ -28,6 +29,7 @@ struct SceneOptions {
     std::string object_scale = "1,1,1";
     std::string background = "0,0,0,0";
     bool gl_debug = false;
+    EffectOptions effect;
 };
 
 void add_scene_options(CLI::App& command, SceneOptions& options);
@@ -39,6 +41,7 @@ struct RenderRequest {
     int width = 256, height = 256;
     int samples = 0;
     bool gl_debug = false;
+    EffectOptions effect;  // path empty: the built-in debug view
 };
 
 RenderRequest to_render_request(const SceneOptions& options);  // throws UsageError on bad values

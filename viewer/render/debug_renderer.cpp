@@ -4,7 +4,6 @@
 
 #include "core/error.hpp"
 #include "gl/program.hpp"
-#include "scene/shapes.hpp"
 
 namespace fxview::builtin_shaders {
 extern const std::string_view debug_vert;
@@ -36,12 +35,6 @@ DebugRenderer::DebugRenderer()
                                  {GL_FRAGMENT_SHADER, std::string(builtin_shaders::debug_frag),
                                   "effects/builtin/debug.frag"}})) {}
 
-const GpuMesh& DebugRenderer::mesh(const std::string& name_or_path) {
-    auto found = meshes_.find(name_or_path);
-    if (found == meshes_.end()) found = meshes_.emplace(name_or_path, GpuMesh(scene::load_mesh(name_or_path))).first;
-    return found->second;
-}
-
 void DebugRenderer::render(const scene::Scene& scene, DebugView view, const gl::RenderTarget& target) {
     target.bind_for_drawing();
     glEnable(GL_DEPTH_TEST);
@@ -71,7 +64,7 @@ void DebugRenderer::render(const scene::Scene& scene, DebugView view, const gl::
         glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "u_world"), 1, GL_FALSE, glm::value_ptr(world));
         glProgramUniformMatrix3fv(program, glGetUniformLocation(program, "u_normal_matrix"), 1, GL_FALSE,
                                   glm::value_ptr(math::normal_matrix(world)));
-        mesh(object.mesh).draw();
+        meshes_.get(object.mesh).draw();
     }
     glUseProgram(0);
     target.resolve();

@@ -2,13 +2,12 @@
 // camera, vector to light; seed 002 ch. 4.1) into a render target. Meshes are uploaded once and
 // kept for later frames.
 #pragma once
-#include <map>
 #include <string>
 #include <string_view>
 
 #include "gl/objects.hpp"
 #include "gl/render_target.hpp"
-#include "render/gpu_mesh.hpp"
+#include "render/mesh_cache.hpp"
 #include "scene/scene.hpp"
 
 namespace fxview::render {
@@ -24,10 +23,8 @@ public:
     void render(const scene::Scene& scene, DebugView view, const gl::RenderTarget& target);
 
 private:
-    const GpuMesh& mesh(const std::string& name_or_path);
-
     gl::Program program_;
-    std::map<std::string, GpuMesh> meshes_;
+    MeshCache meshes_;
 };
 
 }  // namespace fxview::render

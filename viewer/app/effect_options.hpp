@@ -1,0 +1,22 @@
+// Options naming an effect: the file, its technique and --set NAME=VALUE overrides; and the
+// include search path (effects/lib of the source tree, or $FXVIEW_EFFECTS_DIR/lib).
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+#include "effect/parser.hpp"
+
+namespace fxview::app {
+
+struct EffectOptions {
+    std::string path;  // empty: the built-in debug shader
+    std::string technique;
+    std::vector<std::string> sets;
+};
+
+void add_effect_options(CLI::App& command, EffectOptions& options);
+effect::LoadOptions effect_load_options();
+
+}  // namespace fxview::app

@@ -1,0 +1,86 @@
+// The in-memory form of an effect file (docs/effect-format.md): parameters with annotations and
+// semantics, named GLSL shader blocks, and techniques made of passes with render states.
+// Parsing produces it; effect_program.hpp compiles it.
+#pragma once
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "effect/render_states.hpp"
+#include "effect/source_map.hpp"
+
+namespace fxview::effect {
+
+// A constant written in the file: a number list, a boolean or a string.
+struct Value {
+    std::vector<double> numbers;  // scalars and vectors; booleans as 0/1
+    std::string text;             // strings
+    bool is_string = false;
+};
+
+struct Annotation {
+    std::string type;  // as written: float, int, bool, string, ...
+    std::string name;
+    Value value;
+    SourceLocation where;
+};
+
+// What the user interface should show for a parameter, from its annotations in any of the three
+// spellings (NVIDIA UIName..., DXSAS SasUi..., Maya lower case).
+struct UiHints {
+    std::string label;
+    std::string widget;  // slider, drag, color, checkbox, combo, vector, none, ...
+    std::optional<double> min, max, step;
+    std::string group;
+    int order = 0;
+    std::string unit;
+    std::string help;
+    std::vector<std::string> items;  // combo entries ("a|b|c" or "a,b,c")
+};
+
+struct Parameter {
+    std::string type;  // GLSL type: float, vec3, int, bool, mat4, ...
+    std::string name;
+    int array_size = 0;    // 0: not an array
+    std::string semantic;  // upper case, empty if none
+    std::vector<Annotation> annotations;
+    std::optional<Value> default_value;
+    UiHints ui;
+    SourceLocation where;
+};
+
+struct ShaderBlock {
+    std::string name;
+    std::string code;  // GLSL with #line directives
+    SourceLocation where;
+};
+
+struct Pass {
+    std::string name;
+    std::map<ShaderStage, std::string> shaders;  // stage -> shader block name
+    RenderStates states;
+    SourceLocation where;
+};
+
+struct Technique {
+    std::string name;
+    std::vector<Pass> passes;
+    std::vector<Annotation> annotations;
+    SourceLocation where;
+};
+
+struct Effect {
+    std::string path;
+    SourceMap sources;          // the effect file and its includes
+    std::string globals;        // top-level GLSL (functions, structs, consts) with #line directives
+    std::vector<Parameter> parameters;
+    std::vector<ShaderBlock> shaders;
+    std::vector<Technique> techniques;
+
+    const Parameter* find_parameter(const std::string& name) const;
+    const ShaderBlock* find_shader(const std::string& name) const;
+    const Technique* find_technique(const std::string& name) const;
+};
+
+}  // namespace fxview::effect

@@ -1,0 +1,120 @@
+#include "effect/effect_program.hpp"
+
+#include "effect/parser.hpp"
+#include "gl/program.hpp"
+
+namespace fxview::effect {
+namespace {
+
+GLenum gl_stage(ShaderStage stage) {
+    switch (stage) {
+        case ShaderStage::Vertex: return GL_VERTEX_SHADER;
+        case ShaderStage::Geometry: return GL_GEOMETRY_SHADER;
+        case ShaderStage::Fragment: return GL_FRAGMENT_SHADER;
+    }
+    return GL_VERTEX_SHADER;
+}
+
+}  // namespace
+
+std::string assemble_stage(const Effect& effect, const Pass& pass, ShaderStage stage) {
+    std::string source = "#version 450 core\n";
+    for (const auto& p : effect.parameters) {
+        source += effect.sources.line_directive(p.where);
+        source += "uniform " + p.type + " " + p.name;
+        if (p.array_size > 0) source += "[" + std::to_string(p.array_size) + "]";
+        source += ";\n";
+    }
+    source += effect.globals;
+    source += effect.find_shader(pass.shaders.at(stage))->code;
+    return source;
+}
+
+CompiledTechnique compile_technique(const Effect& effect, const Technique& technique) {
+    CompiledTechnique compiled;
+    compiled.technique = &technique;
+    std::string errors;
+    for (const auto& pass : technique.passes) {
+        if (!pass.states.render_target.empty())
+            throw EffectError(pass.where, "pass " + pass.name + ": RenderTarget '" + pass.states.render_target +
+                                              "' - render targets declared in effects are not supported yet");
+        std::vector<gl::ShaderSource> stages;
+        for (const auto& [stage, name] : pass.shaders)
+            stages.push_back({gl_stage(stage), assemble_stage(effect, pass, stage),
+                              effect.find_shader(name)->where.str() + " (" + stage_name(stage) + " shader " + name + ")"});
+        CompiledPass compiled_pass;
+        compiled_pass.pass = &pass;
+        try {
+            compiled_pass.program = gl::link_program(stages);
+        } catch (const gl::ShaderError& error) {
+            errors += effect.sources.map_compiler_log(error.what());
+            continue;
+        }
+        const GLuint program = compiled_pass.program.get();
+        GLint count = 0;
+        glGetProgramInterfaceiv(program, GL_UNIFORM, GL_ACTIVE_RESOURCES, &count);
+        for (GLint i = 0; i < count; ++i) {
+            const GLenum properties[] = {GL_TYPE, GL_LOCATION, GL_ARRAY_SIZE, GL_BLOCK_INDEX, GL_NAME_LENGTH};
+            GLint results[5] = {};
+            glGetProgramResourceiv(program, GL_UNIFORM, static_cast<GLuint>(i), 5, properties, 5, nullptr, results);
+            if (results[3] != -1) continue;  // member of a uniform block: bound by the block
+            std::string name(static_cast<size_t>(results[4]), '\0');
+            glGetProgramResourceName(program, GL_UNIFORM, static_cast<GLuint>(i), results[4], nullptr, name.data());
+            name.resize(name.find('\0') == std::string::npos ? name.size() : name.find('\0'));
+            if (const size_t bracket = name.find('['); bracket != std::string::npos) name.resize(bracket);
+            const Parameter* parameter = effect.find_parameter(name);
+            if (!parameter)
+                throw EffectError(pass.where, "pass " + pass.name + ": uniform '" + name +
+                                                  "' is declared inside a shader block; declare it at the top level of the effect");
+            compiled_pass.uniforms.push_back({results[1], static_cast<GLenum>(results[0]), results[2], parameter});
+        }
+        compiled.passes.push_back(std::move(compiled_pass));
+    }
+    if (!errors.empty()) throw EffectError(technique.where, "technique " + technique.name + " does not compile:\n" + errors);
+    return compiled;
+}
+
+void bind_uniforms(const CompiledPass& pass, const ParameterValues& values, const FrameContext& frame) {
+    const GLuint program = pass.program.get();
+    for (const auto& uniform : pass.uniforms) {
+        const Parameter& p = *uniform.parameter;
+        const int components = component_count(p.type);
+        if (components == 0) continue;  // samplers: texture units come with texture support
+        std::vector<float> data;
+        if (!p.semantic.empty()) {
+            data = semantic_value(p.semantic, frame, components);
+            data.resize(static_cast<size_t>(components));
+        } else {
+            const auto found = values.find(p.name);
+            if (found == values.end()) continue;
+            data.assign(found->second.begin(), found->second.end());
+        }
+        const GLsizei count = std::max(1, p.array_size);
+        if (data.size() < static_cast<size_t>(components * count)) continue;
+        const bool integer = p.type == "int" || p.type.rfind("ivec", 0) == 0 || p.type == "bool" || p.type.rfind("bvec", 0) == 0 ||
+                             p.type == "uint" || p.type.rfind("uvec", 0) == 0;
+        if (integer) {
+            std::vector<GLint> ints(data.begin(), data.end());
+            switch (components) {
+                case 1: glProgramUniform1iv(program, uniform.location, count, ints.data()); break;
+                case 2: glProgramUniform2iv(program, uniform.location, count, ints.data()); break;
+                case 3: glProgramUniform3iv(program, uniform.location, count, ints.data()); break;
+                case 4: glProgramUniform4iv(program, uniform.location, count, ints.data()); break;
+            }
+            continue;
+        }
+        switch (components) {
+            case 1: glProgramUniform1fv(program, uniform.location, count, data.data()); break;
+            case 2: glProgramUniform2fv(program, uniform.location, count, data.data()); break;
+            case 3: glProgramUniform3fv(program, uniform.location, count, data.data()); break;
+            case 4:
+                if (p.type == "mat2") glProgramUniformMatrix2fv(program, uniform.location, count, GL_FALSE, data.data());
+                else glProgramUniform4fv(program, uniform.location, count, data.data());
+                break;
+            case 9: glProgramUniformMatrix3fv(program, uniform.location, count, GL_FALSE, data.data()); break;
+            case 16: glProgramUniformMatrix4fv(program, uniform.location, count, GL_FALSE, data.data()); break;
+        }
+    }
+}
+
+}  // namespace fxview::effect

@@ -1,0 +1,41 @@
+// Compiling a technique: one GL program per pass, assembled from the parameter declarations, the
+// shared top-level GLSL and the pass's shader blocks; active uniforms are reflected and checked
+// against the declarations, and bound each draw from parameter values or SAS semantics.
+#pragma once
+#include <vector>
+
+#include "effect/effect.hpp"
+#include "effect/parameter_values.hpp"
+#include "effect/semantics.hpp"
+#include "gl/objects.hpp"
+
+namespace fxview::effect {
+
+struct BoundUniform {
+    GLint location = -1;
+    GLenum type = 0;
+    GLint array_size = 1;
+    const Parameter* parameter = nullptr;
+};
+
+struct CompiledPass {
+    const Pass* pass = nullptr;
+    gl::Program program;
+    std::vector<BoundUniform> uniforms;
+};
+
+struct CompiledTechnique {
+    const Technique* technique = nullptr;
+    std::vector<CompiledPass> passes;
+};
+
+// The GLSL of one stage of a pass exactly as it goes to the driver (`fxview check --dump` prints it).
+std::string assemble_stage(const Effect& effect, const Pass& pass, ShaderStage stage);
+
+// Throws EffectError whose message holds every compiler message mapped to `file:line`.
+CompiledTechnique compile_technique(const Effect& effect, const Technique& technique);
+
+// Sets every uniform of the pass: semantics from `frame`, the rest from `values`.
+void bind_uniforms(const CompiledPass& pass, const ParameterValues& values, const FrameContext& frame);
+
+}  // namespace fxview::effect

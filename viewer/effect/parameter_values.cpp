@@ -1,0 +1,71 @@
+#include "effect/parameter_values.hpp"
+
+#include <charconv>
+#include <cmath>
+
+#include "effect/parser.hpp"
+
+namespace fxview::effect {
+
+ParameterValues default_values(const Effect& effect) {
+    ParameterValues values;
+    for (const auto& p : effect.parameters) {
+        if (!p.semantic.empty() || is_sampler_type(p.type)) continue;
+        const size_t count = static_cast<size_t>(component_count(p.type) * std::max(1, p.array_size));
+        values[p.name] = p.default_value ? p.default_value->numbers : std::vector<double>(count, 0.0);
+    }
+    return values;
+}
+
+namespace {
+
+double srgb_to_linear(double encoded) {
+    return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
+}
+
+}  // namespace
+
+void set_value_from_text(const Effect& effect, ParameterValues& values, const std::string& assignment) {
+    const size_t equals = assignment.find('=');
+    if (equals == std::string::npos || equals == 0)
+        throw UsageError("--set needs NAME=VALUE, got '" + assignment + "'");
+    const std::string name = assignment.substr(0, equals), text = assignment.substr(equals + 1);
+    const Parameter* parameter = effect.find_parameter(name);
+    if (!parameter) throw UsageError("--set: the effect has no parameter '" + name + "'");
+    if (!parameter->semantic.empty())
+        throw UsageError("--set: " + name + " is bound to the semantic " + parameter->semantic + " and set by fxview");
+    auto& target = values[name];
+    std::vector<double> parsed;
+    if (!text.empty() && text[0] == '#') {
+        if (text.size() != 7 && text.size() != 9) throw UsageError("--set " + name + ": colour must be #rrggbb or #rrggbbaa");
+        for (size_t i = 1; i < text.size(); i += 2) {
+            unsigned byte = 0;
+            const auto [end, error] = std::from_chars(text.data() + i, text.data() + i + 2, byte, 16);
+            if (error != std::errc() || end != text.data() + i + 2) throw UsageError("--set " + name + ": bad hex colour '" + text + "'");
+            parsed.push_back(i < 7 ? srgb_to_linear(byte / 255.0) : byte / 255.0);  // alpha stays linear
+        }
+        if (target.size() == 4 && parsed.size() == 3) parsed.push_back(1.0);
+    } else {
+        size_t start = 0;
+        for (size_t i = 0; i <= text.size(); ++i) {
+            if (i < text.size() && text[i] != ',') continue;
+            const std::string item = text.substr(start, i - start);
+            start = i + 1;
+            if (item == "true" || item == "false") {
+                parsed.push_back(item == "true" ? 1.0 : 0.0);
+                continue;
+            }
+            double value = 0.0;
+            const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), value);
+            if (error != std::errc() || end != item.data() + item.size() || item.empty())
+                throw UsageError("--set " + name + ": '" + item + "' is not a number");
+            parsed.push_back(value);
+        }
+    }
+    if (parsed.size() != target.size())
+        throw UsageError("--set " + name + ": " + parameter->type + " needs " + std::to_string(target.size()) +
+                         " value(s), got " + std::to_string(parsed.size()));
+    target = parsed;
+}
+
+}  // namespace fxview::effect

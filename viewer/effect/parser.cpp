@@ -1,0 +1,376 @@
+#include "effect/parser.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <map>
+#include <set>
+
+#include "effect/lexer.hpp"
+#include "effect/semantics.hpp"
+
+namespace fxview::effect {
+
+int component_count(const std::string& t) {
+    static const std::map<std::string, int> counts = {
+        {"float", 1}, {"vec2", 2},  {"vec3", 3},  {"vec4", 4},  {"int", 1},   {"ivec2", 2}, {"ivec3", 3},
+        {"ivec4", 4}, {"uint", 1},  {"uvec2", 2}, {"uvec3", 3}, {"uvec4", 4}, {"bool", 1},  {"bvec2", 2},
+        {"bvec3", 3}, {"bvec4", 4}, {"mat2", 4},  {"mat3", 9},  {"mat4", 16}};
+    const auto found = counts.find(t);
+    return found == counts.end() ? 0 : found->second;
+}
+
+bool is_sampler_type(const std::string& t) { return t.find("sampler") != std::string::npos; }
+
+const Parameter* Effect::find_parameter(const std::string& name) const {
+    for (const auto& p : parameters)
+        if (p.name == name) return &p;
+    return nullptr;
+}
+const ShaderBlock* Effect::find_shader(const std::string& name) const {
+    for (const auto& s : shaders)
+        if (s.name == name) return &s;
+    return nullptr;
+}
+const Technique* Effect::find_technique(const std::string& name) const {
+    for (const auto& t : techniques)
+        if (t.name == name) return &t;
+    return nullptr;
+}
+
+namespace {
+
+std::string lower(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+}
+
+class Parser {
+public:
+    Parser(Effect& effect) : effect_(effect), lexer_(effect.sources.text()) {}
+
+    void parse() {
+        for (;;) {
+            const Token token = lexer_.peek();
+            check_unterminated();
+            if (token.kind == TokenKind::End) break;
+            if (token.kind == TokenKind::Preprocessor) {
+                lexer_.next();
+                effect_.globals += effect_.sources.glsl(token.begin, token.end);
+            } else if (token.kind == TokenKind::Identifier && token.text == "uniform") {
+                parse_parameter();
+            } else if (token.kind == TokenKind::Identifier && (token.text == "GLSLShader" || token.text == "shader")) {
+                parse_shader_block();
+            } else if (token.kind == TokenKind::Identifier && token.text == "technique") {
+                parse_technique();
+            } else {
+                parse_glsl_declaration();
+            }
+        }
+        check_references();
+    }
+
+private:
+    SourceLocation at(const Token& token) const { return effect_.sources.locate(token.begin); }
+
+    [[noreturn]] void fail(const Token& token, const std::string& message) const { throw EffectError(at(token), message); }
+
+    void check_unterminated() const {
+        if (lexer_.unterminated != std::string_view::npos)
+            throw EffectError(effect_.sources.locate(lexer_.unterminated), "unterminated comment or string");
+    }
+
+    Token next() {
+        Token token = lexer_.next();
+        check_unterminated();
+        return token;
+    }
+
+    Token expect_identifier(const std::string& what) {
+        const Token token = next();
+        if (token.kind != TokenKind::Identifier)
+            fail(token, "expected " + what + ", found " + (token.kind == TokenKind::End ? "end of file" : "'" + token.text + "'"));
+        return token;
+    }
+
+    Token expect(char punct, const std::string& context) {
+        const Token token = next();
+        if (token.kind != TokenKind::Punct || token.text[0] != punct)
+            fail(token, std::string("expected '") + punct + "' " + context + ", found " +
+                            (token.kind == TokenKind::End ? "end of file" : "'" + token.text + "'"));
+        return token;
+    }
+
+    bool accept(char punct) {
+        const Token token = lexer_.peek();
+        if (token.kind == TokenKind::Punct && token.text[0] == punct) {
+            next();
+            return true;
+        }
+        return false;
+    }
+
+    // From an opening brace just read to its matching closing brace; returns the closing token.
+    Token skip_block(const Token& open, const std::string& what) {
+        int depth = 1;
+        for (;;) {
+            const Token token = next();
+            if (token.kind == TokenKind::End) fail(open, "unterminated " + what + ": '{' is never closed");
+            if (token.kind != TokenKind::Punct) continue;
+            if (token.text[0] == '{') ++depth;
+            if (token.text[0] == '}' && --depth == 0) return token;
+        }
+    }
+
+    double parse_number(const Token& token, bool negative) {
+        std::string text = token.text;
+        while (!text.empty() && (text.back() == 'f' || text.back() == 'F' || text.back() == 'u' || text.back() == 'U'))
+            text.pop_back();
+        double value = 0.0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (error != std::errc() || end != text.data() + text.size()) fail(token, "malformed number '" + token.text + "'");
+        return negative ? -value : value;
+    }
+
+    // A constant: 1.5, -2, true, "text", {1, 2, 3} or vec3(1, 2, 3).
+    Value parse_value() {
+        Value value;
+        Token token = next();
+        if (token.kind == TokenKind::String) {
+            value.is_string = true;
+            value.text = token.text;
+            return value;
+        }
+        const bool list = token.kind == TokenKind::Punct && token.text == "{";
+        const bool constructor = token.kind == TokenKind::Identifier && lexer_.peek().text == "(" ;
+        if (list || constructor) {
+            if (constructor) next();  // '('
+            const char close = list ? '}' : ')';
+            if (!accept(close))
+                do value.numbers.push_back(parse_scalar(next())); while (accept(','));
+            expect(close, "to end the value list");
+            return value;
+        }
+        value.numbers.push_back(parse_scalar(token));
+        return value;
+    }
+
+    double parse_scalar(Token token) {
+        bool negative = false;
+        if (token.kind == TokenKind::Punct && (token.text == "-" || token.text == "+")) {
+            negative = token.text == "-";
+            token = next();
+        }
+        if (token.kind == TokenKind::Number) return parse_number(token, negative);
+        if (token.kind == TokenKind::Identifier && (token.text == "true" || token.text == "false") && !negative)
+            return token.text == "true" ? 1.0 : 0.0;
+        fail(token, "expected a number, found " + (token.kind == TokenKind::End ? "end of file" : "'" + token.text + "'"));
+    }
+
+    std::vector<Annotation> parse_annotations() {
+        std::vector<Annotation> annotations;
+        if (!accept('<')) return annotations;
+        while (!accept('>')) {
+            Annotation annotation;
+            const Token type = expect_identifier("an annotation type (string, float, int, bool) or '>'");
+            annotation.where = at(type);
+            annotation.type = type.text;
+            annotation.name = expect_identifier("an annotation name after '" + type.text + "'").text;
+            expect('=', "after annotation " + annotation.name);
+            annotation.value = parse_value();
+            const std::string t = lower(annotation.type);
+            if ((t == "string") != annotation.value.is_string)
+                throw EffectError(annotation.where, "annotation " + annotation.name + " is declared " + annotation.type +
+                                                        " but its value is " + (annotation.value.is_string ? "a string" : "not a string"));
+            expect(';', "after annotation " + annotation.name);
+            annotations.push_back(std::move(annotation));
+        }
+        return annotations;
+    }
+
+    void parse_parameter() {
+        const Token keyword = next();  // uniform
+        Parameter parameter;
+        parameter.where = at(keyword);
+        parameter.type = expect_identifier("a type after 'uniform'").text;
+        const Token name = expect_identifier("a parameter name after '" + parameter.type + "'");
+        parameter.name = name.text;
+        if (effect_.find_parameter(parameter.name))
+            fail(name, "parameter '" + parameter.name + "' declared twice (first at " +
+                           effect_.find_parameter(parameter.name)->where.str() + ")");
+        if (accept('[')) {
+            const Token size = next();
+            if (size.kind != TokenKind::Number) fail(size, "expected an array size");
+            parameter.array_size = static_cast<int>(parse_number(size, false));
+            if (parameter.array_size < 1) fail(size, "array size must be positive");
+            expect(']', "after the array size");
+        }
+        if (accept(':')) parameter.semantic = expect_identifier("a semantic after ':'").text;
+        std::transform(parameter.semantic.begin(), parameter.semantic.end(), parameter.semantic.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+        if (!parameter.semantic.empty() && !is_known_semantic(parameter.semantic))
+            fail(name, "unknown semantic '" + parameter.semantic + "' on " + parameter.name);
+        parameter.annotations = parse_annotations();
+        if (accept('=')) {
+            const Token first = lexer_.peek();
+            parameter.default_value = parse_value();
+            check_default(parameter, first);
+        }
+        expect(';', "after the declaration of " + parameter.name);
+        if (!is_sampler_type(parameter.type) && component_count(parameter.type) == 0)
+            throw EffectError(parameter.where, "unknown parameter type '" + parameter.type + "'");
+        parameter.ui = ui_hints_from(parameter.annotations);
+        effect_.parameters.push_back(std::move(parameter));
+    }
+
+    void check_default(Parameter& parameter, const Token& first) {
+        Value& value = *parameter.default_value;
+        const int needed = component_count(parameter.type) * std::max(1, parameter.array_size);
+        if (value.is_string) fail(first, "default of " + parameter.name + " must be numeric, not a string");
+        if (needed == 0) fail(first, parameter.type + " " + parameter.name + " takes no default value");
+        if (value.numbers.size() == 1 && needed > 1 && parameter.array_size == 0 && parameter.type.rfind("mat", 0) != 0)
+            value.numbers.assign(static_cast<size_t>(needed), value.numbers[0]);  // vec3(0.5) broadcasts
+        if (static_cast<int>(value.numbers.size()) != needed)
+            fail(first, "default of " + parameter.type + " " + parameter.name + " has " + std::to_string(value.numbers.size()) +
+                            " value(s), needs " + std::to_string(needed));
+    }
+
+    void parse_shader_block() {
+        next();  // GLSLShader
+        const Token name = expect_identifier("a shader name");
+        if (effect_.find_shader(name.text)) fail(name, "shader '" + name.text + "' defined twice");
+        const Token open = expect('{', "to open shader " + name.text);
+        const Token close = skip_block(open, "shader " + name.text);
+        effect_.shaders.push_back({name.text, effect_.sources.glsl(open.end, close.begin), at(name)});
+    }
+
+    void parse_technique() {
+        next();  // technique
+        Technique technique;
+        const Token name = expect_identifier("a technique name");
+        technique.name = name.text;
+        technique.where = at(name);
+        if (effect_.find_technique(technique.name)) fail(name, "technique '" + technique.name + "' defined twice");
+        technique.annotations = parse_annotations();
+        const Token open = expect('{', "to open technique " + technique.name);
+        while (!accept('}')) {
+            const Token keyword = next();
+            if (keyword.kind == TokenKind::End) fail(open, "unterminated technique " + technique.name + ": '{' is never closed");
+            if (keyword.kind != TokenKind::Identifier || keyword.text != "pass")
+                fail(keyword, "expected 'pass' or '}' in technique " + technique.name + ", found '" + keyword.text + "'");
+            technique.passes.push_back(parse_pass(technique));
+        }
+        if (technique.passes.empty()) fail(name, "technique " + technique.name + " has no pass");
+        effect_.techniques.push_back(std::move(technique));
+    }
+
+    Pass parse_pass(const Technique& technique) {
+        Pass pass;
+        Token token = lexer_.peek();
+        pass.where = at(token);
+        pass.name = token.kind == TokenKind::Identifier ? next().text : "p" + std::to_string(technique.passes.size());
+        for (const auto& other : technique.passes)
+            if (other.name == pass.name) fail(token, "pass '" + pass.name + "' defined twice in technique " + technique.name);
+        parse_annotations();
+        const Token open = expect('{', "to open pass " + pass.name);
+        while (!accept('}')) {
+            const Token state = next();
+            if (state.kind == TokenKind::End) fail(open, "unterminated pass " + pass.name + ": '{' is never closed");
+            if (state.kind != TokenKind::Identifier) fail(state, "expected a state name in pass " + pass.name + ", found '" + state.text + "'");
+            expect('=', "after " + state.text);
+            const std::string key = lower(state.text);
+            static const std::map<std::string, ShaderStage> stages = {
+                {"vertexshader", ShaderStage::Vertex},     {"vertexprogram", ShaderStage::Vertex},
+                {"fragmentshader", ShaderStage::Fragment}, {"fragmentprogram", ShaderStage::Fragment},
+                {"pixelshader", ShaderStage::Fragment},    {"geometryshader", ShaderStage::Geometry},
+                {"geometryprogram", ShaderStage::Geometry}};
+            if (const auto stage = stages.find(key); stage != stages.end()) {
+                Token shader = expect_identifier("a shader name");
+                if (shader.text == "compile") {  // CgFX: compile PROFILE name(...)
+                    expect_identifier("a profile after 'compile'");
+                    shader = expect_identifier("a shader name");
+                    if (accept('(')) expect(')', "after the shader name");
+                }
+                pass.shaders[stage->second] = shader.text;
+                shader_uses_.push_back({shader, stage->second});
+            } else {
+                set_render_state(pass.states, state.text, parse_state_value(), at(state));
+            }
+            expect(';', "after the value of " + state.text);
+        }
+        if (!pass.shaders.count(ShaderStage::Vertex) || !pass.shaders.count(ShaderStage::Fragment))
+            throw EffectError(pass.where, "pass " + pass.name + " needs a VertexShader and a FragmentShader");
+        return pass;
+    }
+
+    StateValue parse_state_value() {
+        StateValue value;
+        const bool grouped = accept('(') ? true : false;
+        const bool braced = !grouped && accept('{');
+        do {
+            Token token = next();
+            bool negative = false;
+            if (token.kind == TokenKind::Punct && token.text == "-") {
+                negative = true;
+                token = next();
+            }
+            if (token.kind == TokenKind::Number) {
+                value.numbers.push_back(parse_number(token, negative));
+                value.is_number.push_back(true);
+            } else if (token.kind == TokenKind::Identifier && !negative) {
+                value.words.push_back(token.text);
+                value.is_number.push_back(false);
+            } else {
+                fail(token, "expected a state value, found " + (token.kind == TokenKind::End ? "end of file" : "'" + token.text + "'"));
+            }
+        } while ((grouped || braced) && accept(','));
+        if (grouped) expect(')', "to close the state value");
+        if (braced) expect('}', "to close the state value");
+        return value;
+    }
+
+    // Functions, structs, consts and anything else GLSL: copied to every stage unchanged.
+    void parse_glsl_declaration() {
+        const Token first = next();
+        if (first.kind == TokenKind::Punct && first.text == "}") fail(first, "unexpected '}'");
+        size_t end = first.end;
+        if (!(first.kind == TokenKind::Punct && first.text == ";")) {
+            for (;;) {
+                const Token token = next();
+                if (token.kind == TokenKind::End) fail(first, "declaration starting with '" + first.text + "' never ends (missing ';' or '}')");
+                end = token.end;
+                if (token.kind != TokenKind::Punct) continue;
+                if (token.text == ";") break;
+                if (token.text == "{") {
+                    end = skip_block(token, "block").end;
+                    if (lexer_.peek().text == ";") end = next().end;  // struct S { ... };
+                    break;
+                }
+            }
+        }
+        effect_.globals += effect_.sources.glsl(first.begin, end);
+    }
+
+    void check_references() {
+        if (effect_.techniques.empty())
+            throw EffectError({effect_.path, 1}, "the effect defines no technique");
+        for (const auto& [token, stage] : shader_uses_)
+            if (!effect_.find_shader(token.text)) fail(token, "unknown shader '" + token.text + "'");
+    }
+
+    Effect& effect_;
+    Lexer lexer_;
+    std::vector<std::pair<Token, ShaderStage>> shader_uses_;
+};
+
+}  // namespace
+
+Effect load_effect(const std::string& path, const LoadOptions& options) {
+    Effect effect;
+    effect.path = path;
+    effect.sources = SourceMap::load(path, options.include_dirs);
+    Parser(effect).parse();
+    return effect;
+}
+
+}  // namespace fxview::effect

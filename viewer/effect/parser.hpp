@@ -1,0 +1,24 @@
+// Reading effect files (docs/effect-format.md) into effect::Effect. Every error is an EffectError
+// with the `file:line` of the effect or include where it was found.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "effect/effect.hpp"
+
+namespace fxview::effect {
+
+struct LoadOptions {
+    std::vector<std::string> include_dirs;  // searched after the including file's folder (effects/lib)
+};
+
+Effect load_effect(const std::string& path, const LoadOptions& options);
+
+// Number of float/int components of a GLSL value type (float 1, vec3 3, mat4 16); 0 for samplers
+// and anything that takes no constant.
+int component_count(const std::string& glsl_type);
+bool is_sampler_type(const std::string& glsl_type);
+
+UiHints ui_hints_from(const std::vector<Annotation>& annotations);
+
+}  // namespace fxview::effect

@@ -1,0 +1,76 @@
+#include "effect/semantics.hpp"
+
+#include <map>
+#include <optional>
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace fxview::effect {
+namespace {
+
+const std::vector<std::string> kMatrixBases = {"WORLDVIEWPROJECTION", "VIEWPROJECTION", "WORLDVIEW",
+                                               "PROJECTION", "WORLD", "VIEW"};
+const std::vector<std::string> kSuffixes = {"INVERSETRANSPOSE", "INVERSE", "TRANSPOSE", ""};
+const std::vector<std::string> kOthers = {"CAMERAPOSITION", "LIGHTPOSITION", "LIGHTDIRECTION", "VIEWPORTPIXELSIZE",
+                                          "TIME", "FRAME"};
+
+std::optional<glm::mat4> matrix_for(const std::string& semantic, const FrameContext& f) {
+    for (const auto& base : kMatrixBases) {
+        if (semantic.rfind(base, 0) != 0) continue;
+        const std::string suffix = semantic.substr(base.size());
+        glm::mat4 m = base == "WORLD" ? f.world
+                    : base == "VIEW" ? f.view
+                    : base == "PROJECTION" ? f.projection
+                    : base == "WORLDVIEW" ? f.view * f.world
+                    : base == "VIEWPROJECTION" ? f.projection * f.view
+                                               : f.projection * f.view * f.world;
+        if (suffix.empty()) return m;
+        if (suffix == "INVERSE") return glm::inverse(m);
+        if (suffix == "TRANSPOSE") return glm::transpose(m);
+        if (suffix == "INVERSETRANSPOSE") return glm::transpose(glm::inverse(m));
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+bool is_known_semantic(const std::string& semantic) {
+    for (const auto& other : kOthers)
+        if (semantic == other) return true;
+    FrameContext identity;
+    return matrix_for(semantic, identity).has_value();
+}
+
+const std::vector<std::string>& semantic_names() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> all;
+        for (const auto& base : kMatrixBases)
+            for (const auto& suffix : kSuffixes) all.push_back(base + suffix);
+        all.insert(all.end(), kOthers.begin(), kOthers.end());
+        return all;
+    }();
+    return names;
+}
+
+std::vector<float> semantic_value(const std::string& semantic, const FrameContext& f, int components) {
+    if (const auto m = matrix_for(semantic, f)) {
+        if (components == 9) {
+            const glm::mat3 m3(*m);
+            return {glm::value_ptr(m3), glm::value_ptr(m3) + 9};
+        }
+        return {glm::value_ptr(*m), glm::value_ptr(*m) + 16};
+    }
+    if (semantic == "CAMERAPOSITION") return {f.camera_position.x, f.camera_position.y, f.camera_position.z, 1.0f};
+    if (semantic == "LIGHTPOSITION") return {f.light_position.x, f.light_position.y, f.light_position.z, 1.0f};
+    if (semantic == "LIGHTDIRECTION") {
+        // Direction the light travels, towards the origin it orbits.
+        const glm::vec3 d = glm::length(f.light_position) > 0 ? -glm::normalize(f.light_position) : glm::vec3(0, 0, -1);
+        return {d.x, d.y, d.z, 0.0f};
+    }
+    if (semantic == "VIEWPORTPIXELSIZE") return {f.viewport_size.x, f.viewport_size.y, 1.0f / f.viewport_size.x, 1.0f / f.viewport_size.y};
+    if (semantic == "TIME") return {f.time};
+    if (semantic == "FRAME") return {static_cast<float>(f.frame)};
+    return {};
+}
+
+}  // namespace fxview::effect

@@ -1,0 +1,28 @@
+// SAS semantics: uniforms the application fills every draw (matrices, camera, light, time).
+// Matrix semantics are WORLD, VIEW, PROJECTION, WORLDVIEW, VIEWPROJECTION, WORLDVIEWPROJECTION,
+// each also with the suffix INVERSE, TRANSPOSE or INVERSETRANSPOSE.
+#pragma once
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+namespace fxview::effect {
+
+struct FrameContext {
+    glm::mat4 world{1.0f}, view{1.0f}, projection{1.0f};
+    glm::vec3 camera_position{0.0f};
+    glm::vec3 light_position{0.0f};
+    glm::vec2 viewport_size{1.0f};
+    float time = 0.0f;
+    int frame = 0;
+};
+
+bool is_known_semantic(const std::string& semantic);  // upper case
+const std::vector<std::string>& semantic_names();     // for messages and docs (matrix bases listed once)
+
+// The value of a semantic as floats in GL order (column-major matrices); mat3 uniforms take the
+// upper-left 3x3 of a matrix semantic.
+std::vector<float> semantic_value(const std::string& semantic, const FrameContext& frame, int components);
+
+}  // namespace fxview::effect
