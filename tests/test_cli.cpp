@@ -149,3 +149,53 @@ TEST_CASE("I/O and data failures exit with 1 naming the file") {
     r = run("render --out /proc/forbidden/x.png");
     CHECK(r.exit_code == 1);
 }
+
+TEST_CASE("list --json describes debug.fx: the four debug techniques and Plain, with parameters") {
+    const Result r = run(std::string("list ") + FXVIEW_SOURCE_EFFECTS_DIR + "/debug.fx --json");
+    REQUIRE(r.exit_code == 0);
+    const auto json = nlohmann::json::parse(r.out);
+    std::vector<std::string> names;
+    for (const auto& technique : json["techniques"]) names.push_back(technique["name"]);
+    CHECK(names == std::vector<std::string>{"Normals", "TexCoords", "VectorToCamera", "VectorToLight", "Plain"});
+    bool found_ambient = false;
+    for (const auto& p : json["parameters"]) {
+        if (p["name"] != "Ambient") continue;
+        found_ambient = true;
+        CHECK(p["type"] == "float");
+        CHECK(p["default"].get<double>() == doctest::Approx(0.05));
+        CHECK(p["min"].get<double>() == 0.0);
+        CHECK(p["max"].get<double>() == 1.0);
+        CHECK(p["group"] == "Plain");
+        CHECK(p["semantic"].is_null());
+    }
+    CHECK(found_ambient);
+}
+
+TEST_CASE("check: the malformed corpus exits 1 with file:line messages, never a crash") {
+    int files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(FXVIEW_TEST_EFFECTS) + "/malformed")) {
+        if (entry.path().extension() != ".fx") continue;
+        ++files;
+        const std::string path = entry.path().string();
+        CAPTURE(path);
+        const Result r = run("check " + path);  // run() fails the test on a signal
+        CHECK(r.exit_code == 1);
+        const bool located = r.out.find(".fx:") != std::string::npos || r.out.find(".glsl:") != std::string::npos;
+        CHECK(located);
+    }
+    CHECK(files >= 25);
+    CHECK(run(std::string("check ") + FXVIEW_SOURCE_EFFECTS_DIR + "/debug.fx").exit_code == 0);
+}
+
+TEST_CASE("render EFFECT --technique Normals matches the built-in normal image; bad technique is exit 2") {
+    const std::string effect_image = temp_path("fx-normals.pfm"), builtin_image = temp_path("builtin-normals.pfm");
+    const std::string debug_fx = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/debug.fx";
+    REQUIRE(run("render " + debug_fx + " --technique Normals --size 64x64 --out " + effect_image).exit_code == 0);
+    REQUIRE(run("render --size 64x64 --out " + builtin_image).exit_code == 0);
+    CHECK(fxview::image::read_pfm(effect_image).data == fxview::image::read_pfm(builtin_image).data);
+    const Result r = run("render " + debug_fx + " --technique Nope --out " + temp_path("x.png"));
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("has no technique 'Nope'") != std::string::npos);
+    CHECK(run("render " + debug_fx + " -t Plain --set Ambient=2,3 --out " + temp_path("x.png")).exit_code == 2);
+    CHECK(run("render " + debug_fx + " -t Plain --set PlainColor=#ff8000 --out " + temp_path("plain.png")).exit_code == 0);
+}

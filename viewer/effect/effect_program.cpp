@@ -1,5 +1,7 @@
 #include "effect/effect_program.hpp"
 
+#include <sstream>
+
 #include "effect/parser.hpp"
 #include "gl/program.hpp"
 
@@ -40,14 +42,23 @@ CompiledTechnique compile_technique(const Effect& effect, const Technique& techn
                                               "' - render targets declared in effects are not supported yet");
         std::vector<gl::ShaderSource> stages;
         for (const auto& [stage, name] : pass.shaders)
-            stages.push_back({gl_stage(stage), assemble_stage(effect, pass, stage),
-                              effect.find_shader(name)->where.str() + " (" + stage_name(stage) + " shader " + name + ")"});
+            stages.push_back({gl_stage(stage), assemble_stage(effect, pass, stage), name});
         CompiledPass compiled_pass;
         compiled_pass.pass = &pass;
         try {
             compiled_pass.program = gl::link_program(stages);
         } catch (const gl::ShaderError& error) {
-            errors += effect.sources.map_compiler_log(error.what());
+            // Each driver message becomes "file:line: message (technique, pass)"; messages without a
+            // line (link errors) are given the pass's location.
+            const std::string context =
+                " [technique " + technique.name + ", pass " + pass.name + ", " + error.label + ": " + error.summary + "]";
+            std::istringstream lines(effect.sources.map_compiler_log(error.log));
+            for (std::string line; std::getline(lines, line);) {
+                if (line.empty()) continue;
+                const bool located = line.find(": ") != std::string::npos && effect.sources.has_file_prefix(line);
+                errors += (located ? line : pass.where.str() + ": " + line) + context + "\n";
+            }
+            if (error.log.empty()) errors += pass.where.str() + ": " + error.what() + context + "\n";
             continue;
         }
         const GLuint program = compiled_pass.program.get();
@@ -70,7 +81,7 @@ CompiledTechnique compile_technique(const Effect& effect, const Technique& techn
         }
         compiled.passes.push_back(std::move(compiled_pass));
     }
-    if (!errors.empty()) throw EffectError(technique.where, "technique " + technique.name + " does not compile:\n" + errors);
+    if (!errors.empty()) throw EffectError(technique.where, errors, EffectError::Lines{});
     return compiled;
 }
 

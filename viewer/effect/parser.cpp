@@ -208,6 +208,8 @@ private:
         if (accept(':')) parameter.semantic = expect_identifier("a semantic after ':'").text;
         std::transform(parameter.semantic.begin(), parameter.semantic.end(), parameter.semantic.begin(),
                        [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+        if (!is_sampler_type(parameter.type) && component_count(parameter.type) == 0)
+            fail(keyword, "unknown parameter type '" + parameter.type + "'");
         if (!parameter.semantic.empty() && !is_known_semantic(parameter.semantic))
             fail(name, "unknown semantic '" + parameter.semantic + "' on " + parameter.name);
         parameter.annotations = parse_annotations();
@@ -217,8 +219,6 @@ private:
             check_default(parameter, first);
         }
         expect(';', "after the declaration of " + parameter.name);
-        if (!is_sampler_type(parameter.type) && component_count(parameter.type) == 0)
-            throw EffectError(parameter.where, "unknown parameter type '" + parameter.type + "'");
         parameter.ui = ui_hints_from(parameter.annotations);
         effect_.parameters.push_back(std::move(parameter));
     }

@@ -112,9 +112,17 @@ SourceLocation SourceMap::locate(size_t offset) const {
     return {files_[origin.file], origin.line};
 }
 
+// Drivers disagree on source-string numbers (Mesa reports 0 for errors on the first line after a
+// `#line L S`), so the file goes into the line number itself: file index * kLinesPerFile + line.
+constexpr long long kLinesPerFile = 1000000;
+
+static std::string encoded_line_directive(int file, int line) {
+    return "#line " + std::to_string(file * kLinesPerFile + line) + "\n";
+}
+
 std::string SourceMap::line_directive(const SourceLocation& where) const {
     const int index = file_index(where.file);
-    return "#line " + std::to_string(where.line) + " " + std::to_string(index < 0 ? 0 : index) + "\n";
+    return encoded_line_directive(index < 0 ? 0 : index, where.line);
 }
 
 std::string SourceMap::glsl(size_t begin, size_t end) const {
@@ -123,13 +131,18 @@ std::string SourceMap::glsl(size_t begin, size_t end) const {
     const size_t first = line_index(begin), last = line_index(end - 1);
     for (size_t i = first; i <= last && i < origins_.size(); ++i) {
         if (i == first || origins_[i].file != origins_[i - 1].file || origins_[i].line != origins_[i - 1].line + 1)
-            out += "#line " + std::to_string(origins_[i].line) + " " + std::to_string(origins_[i].file) + "\n";
+            out += encoded_line_directive(origins_[i].file, origins_[i].line);
         const size_t from = std::max(begin, line_starts_[i]);
         const size_t to = std::min(end, i + 1 < line_starts_.size() ? line_starts_[i + 1] : text_.size());
         out.append(text_, from, to - from);
     }
     if (!out.empty() && out.back() != '\n') out += '\n';
     return out;
+}
+
+bool SourceMap::has_file_prefix(const std::string& line) const {
+    return std::any_of(files_.begin(), files_.end(),
+                       [&](const std::string& file) { return line.rfind(file + ":", 0) == 0; });
 }
 
 std::string SourceMap::map_compiler_log(const std::string& log) const {
@@ -140,9 +153,10 @@ std::string SourceMap::map_compiler_log(const std::string& log) const {
     while (std::getline(lines, line)) {
         std::smatch match;
         if (std::regex_match(line, match, mesa) || std::regex_match(line, match, nvidia)) {
-            const size_t index = std::stoul(match[1].str());
+            const long long encoded = std::stoll(match[2].str());
+            const auto index = static_cast<size_t>(encoded / kLinesPerFile);
             const std::string file = index < files_.size() ? files_[index] : "<generated>";
-            out += file + ":" + match[2].str() + ": " + match[3].str() + "\n";
+            out += file + ":" + std::to_string(encoded % kLinesPerFile) + ": " + match[3].str() + "\n";
         } else if (!line.empty()) {
             out += line + "\n";
         }

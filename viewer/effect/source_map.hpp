@@ -23,6 +23,9 @@ struct SourceLocation {
 struct EffectError : Error {
     EffectError(SourceLocation where, const std::string& message)
         : Error(where.str() + ": " + message), location(std::move(where)) {}
+    // Several messages, each already starting with its own `file:line:` (compiler output).
+    struct Lines {};
+    EffectError(SourceLocation where, const std::string& lines, Lines) : Error(lines), location(std::move(where)) {}
     SourceLocation location;
 };
 
@@ -43,6 +46,8 @@ public:
     // into "file:line: error: ...".
     std::string map_compiler_log(const std::string& log) const;
     const std::vector<std::string>& files() const { return files_; }
+    // Whether `line` starts with "FILE:" for one of the files (a mapped compiler message).
+    bool has_file_prefix(const std::string& line) const;
 
 private:
     struct LineOrigin {

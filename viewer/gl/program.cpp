@@ -35,7 +35,7 @@ Shader compile(const ShaderSource& source) {
     GLint ok = GL_FALSE;
     glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
     if (!ok)
-        throw ShaderError(source.label + ": " + stage_name(source.stage) + " shader does not compile:\n" +
+        throw ShaderError(source.label, std::string(stage_name(source.stage)) + " shader does not compile",
                           info_log(shader.get(), glGetShaderiv, glGetShaderInfoLog));
     return shader;
 }
@@ -54,7 +54,7 @@ Program link_program(const std::vector<ShaderSource>& stages) {
     glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
     if (!ok) {
         const std::string label = stages.empty() ? std::string("program") : stages.front().label;
-        throw ShaderError(label + ": program does not link:\n" + info_log(program.get(), glGetProgramiv, glGetProgramInfoLog));
+        throw ShaderError(label, "program does not link", info_log(program.get(), glGetProgramiv, glGetProgramInfoLog));
     }
     return program;
 }

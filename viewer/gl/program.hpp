@@ -14,9 +14,13 @@ struct ShaderSource {
     std::string label;  // where the source came from, for messages
 };
 
-// Thrown when a stage does not compile or the program does not link; what() holds the log.
+// Thrown when a stage does not compile or the program does not link; what() holds label and log.
 struct ShaderError : Error {
-    using Error::Error;
+    ShaderError(const std::string& label, const std::string& summary, std::string driver_log)
+        : Error(label + ": " + summary + ":\n" + driver_log), label(label), summary(summary), log(std::move(driver_log)) {}
+    std::string label;    // which shader or program
+    std::string summary;  // "fragment shader does not compile", "program does not link"
+    std::string log;      // the driver's info log alone
 };
 
 Program link_program(const std::vector<ShaderSource>& stages);

@@ -1,0 +1,5 @@
+// expect: 4: expected ';' after annotation UIName
+#include "standard.glsl"
+GLSLShader FS { layout(location = 0) out vec4 c; void main() { c = vec4(1.0); } }
+uniform float X < string UIName = "X" float UIMin = 0.0; > = 1.0;
+technique T { pass p { VertexShader = StandardVS; FragmentShader = FS; } }

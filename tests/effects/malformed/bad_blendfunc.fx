@@ -1,0 +1,5 @@
+// expect: 5: render state BlendFunc needs (source, destination)
+#include "standard.glsl"
+GLSLShader FS { layout(location = 0) out vec4 c; void main() { c = vec4(1.0); } }
+technique T { pass p { VertexShader = StandardVS; FragmentShader = FS;
+  BlendFunc = SrcAlpha; } }

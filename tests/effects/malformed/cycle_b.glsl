@@ -1,0 +1,2 @@
+// part of include_cycle.fx
+#include "cycle_a.glsl"

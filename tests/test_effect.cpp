@@ -1,0 +1,220 @@
+// Effect files: the parser on a valid file using every feature, the malformed corpus (each file
+// states the `file:line: message` it must produce), SAS matrices against GLM, parameter values,
+// and GPU rendering through effects (debug.fx against the built-in renderer, multi-pass blending).
+#include <doctest/doctest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "context/context.hpp"
+#include "effect/effect_program.hpp"
+#include "effect/parameter_values.hpp"
+#include "effect/parser.hpp"
+#include "gl/render_target.hpp"
+#include "render/debug_renderer.hpp"
+#include "render/effect_renderer.hpp"
+
+using namespace fxview;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kEffects = FXVIEW_SOURCE_EFFECTS_DIR;
+const std::string kCorpus = FXVIEW_TEST_EFFECTS;
+
+effect::LoadOptions load_options() { return {{kEffects + "/lib"}}; }
+
+context::Context& shared_context() {
+    static const auto context = [] {
+        context::ContextOptions options;
+        options.backend = context::Backend::Egl;
+        return context::create_context(options);
+    }();
+    return *context;
+}
+
+// Parses and compiles every technique; returns the first error's text, or "" if all is well.
+std::string first_error(const std::string& path) {
+    try {
+        const effect::Effect effect = effect::load_effect(path, load_options());
+        shared_context();
+        for (const auto& technique : effect.techniques) effect::compile_technique(effect, technique);
+    } catch (const effect::EffectError& error) {
+        return error.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("a valid effect with every feature parses as written") {
+    const effect::Effect e = effect::load_effect(kCorpus + "/valid/everything.fx", load_options());
+    REQUIRE(e.techniques.size() == 1);
+    const effect::Technique& main = e.techniques[0];
+    CHECK(main.name == "Main");
+    REQUIRE(main.passes.size() == 2);
+    CHECK(main.passes[0].name == "base");
+    CHECK(main.passes[1].name == "p1");  // unnamed pass
+    CHECK(main.passes[0].shaders.at(effect::ShaderStage::Vertex) == "StandardVS");  // CgFX "compile" syntax
+    CHECK(main.passes[1].shaders.at(effect::ShaderStage::Fragment) == "ColorFS");    // PixelShader alias
+    const effect::RenderStates& s = main.passes[0].states;
+    CHECK(s.depth_write == false);
+    CHECK(s.depth_func == GL_LEQUAL);
+    CHECK(s.cull == true);
+    CHECK(s.cull_face == GL_BACK);
+    CHECK(s.blend == true);
+    CHECK(s.blend_src == GL_SRC_ALPHA);
+    CHECK(s.blend_dst == GL_ONE_MINUS_SRC_ALPHA);
+    CHECK(s.color_mask == std::array<bool, 4>{true, true, false, true});
+    CHECK(s.clear_color->at(2) == doctest::Approx(0.3f));
+    // States reset at each pass: the second pass sets only depth test and keeps every other default.
+    const effect::RenderStates& second = main.passes[1].states;
+    CHECK(second.depth_test == false);
+    CHECK(second.blend == false);
+    CHECK(second.depth_write == true);
+
+    const effect::Parameter* roughness = e.find_parameter("Roughness");
+    REQUIRE(roughness);
+    CHECK(roughness->ui.label == "Roughness");
+    CHECK(roughness->ui.widget == "slider");
+    CHECK(*roughness->ui.min == 0.0);
+    CHECK(*roughness->ui.max == 1.0);
+    CHECK(*roughness->ui.step == 0.01);
+    CHECK(roughness->ui.group == "Surface");
+    CHECK(roughness->ui.order == 2);
+    CHECK(roughness->ui.help == "Microfacet roughness");
+    const effect::Parameter* tint = e.find_parameter("Tint");  // DXSAS spelling
+    CHECK(tint->ui.label == "Tint");
+    CHECK(tint->ui.widget == "colorpicker");
+    CHECK(*tint->ui.max == 1.0);
+    CHECK(tint->default_value->numbers == std::vector<double>{0.25, 0.25, 0.25});  // vec3(0.25) broadcast
+    const effect::Parameter* mode = e.find_parameter("Mode");  // Maya spelling
+    CHECK(mode->ui.items == std::vector<std::string>{"off", "on", "auto"});
+    CHECK(e.find_parameter("Offsets")->array_size == 2);
+    CHECK(e.find_parameter("Offsets")->default_value->numbers.size() == 8);
+    CHECK(e.find_parameter("Wvp")->semantic == "WORLDVIEWPROJECTION");  // case-insensitive
+    CHECK(e.find_parameter("Enabled")->default_value->numbers == std::vector<double>{1.0});
+    // #pragma once: standard.glsl's parameters appear once although it is included twice.
+    CHECK(std::count_if(e.parameters.begin(), e.parameters.end(), [](const auto& p) { return p.name == "World"; }) == 1);
+    CHECK(first_error(kCorpus + "/valid/everything.fx") == "");
+}
+
+TEST_CASE("every file of the malformed corpus gives its own message at its own file:line") {
+    int files = 0;
+    for (const auto& entry : fs::directory_iterator(kCorpus + "/malformed")) {
+        if (entry.path().extension() != ".fx") continue;
+        ++files;
+        std::ifstream file(entry.path());
+        std::string header;
+        std::getline(file, header);
+        std::smatch expect;
+        const std::string name = entry.path().filename().string();
+        CAPTURE(name);
+        REQUIRE(std::regex_match(header, expect, std::regex(R"(// expect: (?:(\S+\.\w+):)?(\d+): (.*))")));
+        const std::string expected_file = expect[1].matched ? expect[1].str() : name;
+        const std::string error = first_error(entry.path().string());
+        CAPTURE(error);
+        REQUIRE(!error.empty());
+        std::smatch got;
+        REQUIRE(std::regex_search(error, got, std::regex(R"(^(\S+?):(\d+): )")));
+        CHECK(fs::path(got[1].str()).filename().string() == expected_file);
+        CHECK(got[2].str() == expect[2].str());
+        CHECK(error.find(expect[3].str()) != std::string::npos);
+    }
+    CHECK(files >= 25);
+}
+
+TEST_CASE("SAS matrices equal the GLM products") {
+    effect::FrameContext f;
+    f.world = glm::translate(glm::mat4(1), {1, 2, 3}) * glm::rotate(glm::mat4(1), 0.3f, glm::vec3(0, 1, 0));
+    f.view = glm::lookAt(glm::vec3(0, 1, 5), glm::vec3(0), glm::vec3(0, 1, 0));
+    f.projection = glm::perspective(0.8f, 1.5f, 0.1f, 50.0f);
+    const auto equal = [](const std::vector<float>& value, const glm::mat4& m) {
+        return value.size() == 16 && std::memcmp(value.data(), glm::value_ptr(m), 64) == 0;
+    };
+    CHECK(equal(effect::semantic_value("WORLD", f, 16), f.world));
+    CHECK(equal(effect::semantic_value("VIEW", f, 16), f.view));
+    CHECK(equal(effect::semantic_value("PROJECTION", f, 16), f.projection));
+    CHECK(equal(effect::semantic_value("WORLDVIEW", f, 16), f.view * f.world));
+    CHECK(equal(effect::semantic_value("VIEWPROJECTION", f, 16), f.projection * f.view));
+    CHECK(equal(effect::semantic_value("WORLDVIEWPROJECTION", f, 16), f.projection * f.view * f.world));
+    CHECK(equal(effect::semantic_value("WORLDINVERSE", f, 16), glm::inverse(f.world)));
+    CHECK(equal(effect::semantic_value("VIEWTRANSPOSE", f, 16), glm::transpose(f.view)));
+    CHECK(equal(effect::semantic_value("WORLDVIEWINVERSETRANSPOSE", f, 16), glm::transpose(glm::inverse(f.view * f.world))));
+    const auto normal = effect::semantic_value("WORLDINVERSETRANSPOSE", f, 9);
+    const glm::mat3 expected(glm::transpose(glm::inverse(f.world)));
+    CHECK(std::memcmp(normal.data(), glm::value_ptr(expected), 36) == 0);
+    f.light_position = {0, 0, 2};
+    CHECK(effect::semantic_value("LIGHTDIRECTION", f, 3)[2] == -1.0f);
+    CHECK(effect::is_known_semantic("PROJECTIONINVERSE"));
+    CHECK(!effect::is_known_semantic("WORLDVIEWPROJ"));
+}
+
+TEST_CASE("--set values: numbers, vectors, hex colours, booleans; bad ones named") {
+    const effect::Effect e = effect::load_effect(kCorpus + "/valid/everything.fx", load_options());
+    effect::ParameterValues values = effect::default_values(e);
+    CHECK(values.at("Roughness") == std::vector<double>{0.5});
+    CHECK(!values.count("Wvp"));  // semantics are not user values
+    effect::set_value_from_text(e, values, "Roughness=0.75");
+    CHECK(values.at("Roughness") == std::vector<double>{0.75});
+    effect::set_value_from_text(e, values, "Tint=#ff8000");
+    // sRGB 0x80 = 128/255 decodes to linear 0.21586 (IEC 61966-2-1).
+    CHECK(values.at("Tint")[0] == doctest::Approx(1.0));
+    CHECK(values.at("Tint")[1] == doctest::Approx(0.215861).epsilon(1e-5));
+    CHECK(values.at("Tint")[2] == 0.0);
+    effect::set_value_from_text(e, values, "Enabled=false");
+    CHECK(values.at("Enabled") == std::vector<double>{0.0});
+    effect::set_value_from_text(e, values, "Tint=1,0,0.5");
+    CHECK(values.at("Tint") == std::vector<double>{1, 0, 0.5});
+    CHECK_THROWS_WITH_AS(effect::set_value_from_text(e, values, "Tint=1,0"), doctest::Contains("vec3 needs 3"), UsageError);
+    CHECK_THROWS_WITH_AS(effect::set_value_from_text(e, values, "Nope=1"), doctest::Contains("no parameter 'Nope'"), UsageError);
+    CHECK_THROWS_WITH_AS(effect::set_value_from_text(e, values, "Wvp=1"), doctest::Contains("semantic"), UsageError);
+    CHECK_THROWS_AS(effect::set_value_from_text(e, values, "Roughness=abc"), UsageError);
+    CHECK_THROWS_AS(effect::set_value_from_text(e, values, "Roughness"), UsageError);
+}
+
+TEST_CASE("debug.fx Normals renders exactly the built-in normal view") {
+    shared_context();
+    const effect::Effect e = effect::load_effect(kEffects + "/debug.fx", load_options());
+    for (const char* name : {"Normals", "TexCoords", "VectorToCamera", "VectorToLight", "Plain"}) CHECK(e.find_technique(name));
+    scene::Scene scene;
+    scene.objects.front().mesh = "torus";
+    scene.objects.front().pose.rotation = glm::angleAxis(0.5f, glm::normalize(glm::vec3(1, 1, 0)));
+    const std::pair<const char*, render::DebugView> pairs[] = {{"Normals", render::DebugView::Normals},
+                                                               {"TexCoords", render::DebugView::TexCoords},
+                                                               {"VectorToCamera", render::DebugView::ToCamera},
+                                                               {"VectorToLight", render::DebugView::ToLight}};
+    for (const auto& [technique, view] : pairs) {
+        CAPTURE(technique);
+        gl::RenderTarget a({96, 64, 1, 0}), b({96, 64, 1, 0});
+        render::DebugRenderer debug;
+        debug.render(scene, view, a);
+        const auto compiled = effect::compile_technique(e, *e.find_technique(technique));
+        render::EffectRenderer renderer;
+        renderer.render(scene, compiled, effect::default_values(e), b);
+        const auto expected = a.read_color(), actual = b.read_color();
+        // Same vertex maths and the same fragment formula: the pictures agree to 1e-6 (the effect
+        // computes the normal matrix from the SAS semantic, the built-in from the same GLM call).
+        float worst = 0.0f;
+        for (size_t i = 0; i < expected.data.size(); ++i) worst = std::max(worst, std::abs(expected.data[i] - actual.data[i]));
+        CHECK(worst <= 1e-6f);
+    }
+}
+
+TEST_CASE("two passes with additive blending add exactly") {
+    shared_context();
+    const effect::Effect e = effect::load_effect(kCorpus + "/valid/additive.fx", load_options());
+    const auto compiled = effect::compile_technique(e, e.techniques.front());
+    gl::RenderTarget target({64, 64, 1, 0});
+    render::EffectRenderer renderer;
+    renderer.render(scene::Scene{}, compiled, effect::default_values(e), target);
+    const auto image = target.read_color();
+    CHECK(image.pixel(32, 32)[0] == 0.5f);  // 0.25 + 0.25
+    CHECK(image.pixel(32, 32)[3] == 1.0f);  // alpha masked in the second pass: not 2
+    CHECK(image.pixel(0, 0)[0] == 0.0f);    // background untouched
+}
