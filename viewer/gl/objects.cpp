@@ -38,4 +38,10 @@ Query create_query(GLenum target) {
     return Query(name);
 }
 
+Sampler create_sampler() {
+    GLuint name = 0;
+    glCreateSamplers(1, &name);
+    return Sampler(name);
+}
+
 }  // namespace fxview::gl

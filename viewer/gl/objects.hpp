@@ -56,6 +56,9 @@ struct ShaderTraits {
 struct ProgramTraits {
     static void destroy(GLuint name) { glDeleteProgram(name); }
 };
+struct SamplerTraits {
+    static void destroy(GLuint name) { glDeleteSamplers(1, &name); }
+};
 struct QueryTraits {
     static void destroy(GLuint name) { glDeleteQueries(1, &name); }
 };
@@ -68,6 +71,7 @@ using Framebuffer = Object<FramebufferTraits>;
 using Shader = Object<ShaderTraits>;
 using Program = Object<ProgramTraits>;
 using Query = Object<QueryTraits>;
+using Sampler = Object<SamplerTraits>;
 
 Buffer create_buffer();
 VertexArray create_vertex_array();
@@ -75,5 +79,6 @@ Texture create_texture(GLenum target);
 Renderbuffer create_renderbuffer();
 Framebuffer create_framebuffer();
 Query create_query(GLenum target);
+Sampler create_sampler();
 
 }  // namespace fxview::gl

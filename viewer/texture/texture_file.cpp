@@ -1,0 +1,123 @@
+#include "texture/texture_file.hpp"
+
+#include <stb/stb_image.h>
+#include <tinyexr.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+#include "core/error.hpp"
+
+namespace fxview::texture {
+namespace {
+
+std::string lower_extension(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
+}
+
+TextureData single_level(const std::string& path, PixelFormat format, int width, int height, const void* data) {
+    TextureData texture;
+    texture.format = format;
+    texture.source = path;
+    Level level{width, height, {}};
+    const auto* bytes = static_cast<const std::uint8_t*>(data);
+    level.bytes.assign(bytes, bytes + level_size(format, width, height));
+    texture.faces = {{std::move(level)}};
+    return texture;
+}
+
+}  // namespace
+
+TextureData load_stb_image(const std::string& path) {
+    int width = 0, height = 0, channels = 0;
+    if (lower_extension(path) == ".hdr") {
+        std::unique_ptr<float, decltype(&stbi_image_free)> pixels(stbi_loadf(path.c_str(), &width, &height, &channels, 4),
+                                                                  &stbi_image_free);
+        if (!pixels) throw Error(path + ": cannot read image: " + stbi_failure_reason());
+        return single_level(path, PixelFormat::RGBA32F, width, height, pixels.get());
+    }
+    std::unique_ptr<stbi_uc, decltype(&stbi_image_free)> pixels(stbi_load(path.c_str(), &width, &height, &channels, 4),
+                                                                &stbi_image_free);
+    if (!pixels) throw Error(path + ": cannot read image: " + stbi_failure_reason());
+    return single_level(path, PixelFormat::RGBA8, width, height, pixels.get());
+}
+
+TextureData load_exr_texture(const std::string& path) {
+    float* rgba = nullptr;
+    int width = 0, height = 0;
+    const char* error = nullptr;
+    if (LoadEXR(&rgba, &width, &height, path.c_str(), &error) != TINYEXR_SUCCESS) {
+        const std::string message = error ? error : "unknown error";
+        if (error) FreeEXRErrorMessage(error);
+        throw Error(path + ": cannot read EXR: " + message);
+    }
+    std::unique_ptr<float, decltype(&std::free)> owner(rgba, &std::free);
+    return single_level(path, PixelFormat::RGBA32F, width, height, rgba);
+}
+
+TextureData load_texture_file(const std::string& path) {
+    if (!std::filesystem::is_regular_file(path)) throw Error(path + ": no such texture file");
+    const std::string extension = lower_extension(path);
+    if (extension == ".dds") return load_dds(path);
+    if (extension == ".ftxt") return load_ftxt(path);
+    if (extension == ".exr") return load_exr_texture(path);
+    for (const char* known : {".png", ".jpg", ".jpeg", ".bmp", ".tga", ".hdr"})
+        if (extension == known) return load_stb_image(path);
+    throw Error(path + ": unsupported texture type '" + extension +
+                "' (expected .png, .jpg, .bmp, .tga, .hdr, .exr, .dds or .ftxt)");
+}
+
+TextureData as_1d(const TextureData& image) {
+    if (image.height() != 1)
+        throw Error(image.source + ": a 1D texture needs an image one pixel high, this one is " +
+                    std::to_string(image.height()));
+    TextureData texture = image;
+    texture.type = TextureType::Tex1D;
+    return texture;
+}
+
+TextureData split_cube_cross(const TextureData& cross) {
+    if (is_compressed(cross.format) || cross.faces.size() != 1)
+        throw Error(cross.source + ": a cube cross must be one uncompressed image");
+    const int width = cross.width(), height = cross.height();
+    const bool vertical = height > width;
+    const int columns = vertical ? 3 : 4, rows = vertical ? 4 : 3;
+    const int size = width / columns;
+    if (size == 0 || width != size * columns || height != size * rows)
+        throw Error(cross.source + ": a " + std::string(vertical ? "vertical" : "horizontal") + " cube cross must be " +
+                    std::to_string(columns) + "x" + std::to_string(rows) + " equal squares, the image is " +
+                    std::to_string(width) + "x" + std::to_string(height));
+    struct Cell {
+        int column, row;
+        bool rotated;  // stored upside down (the -Z face of a vertical cross)
+    };
+    // GL face order +X -X +Y -Y +Z -Z.
+    const Cell vertical_cells[6] = {{2, 1, false}, {0, 1, false}, {1, 0, false}, {1, 2, false}, {1, 1, false}, {1, 3, true}};
+    const Cell horizontal_cells[6] = {{2, 1, false}, {0, 1, false}, {1, 0, false}, {1, 2, false}, {1, 1, false}, {3, 1, false}};
+    const int pixel = bytes_per_pixel(cross.format);
+    const Level& source = cross.faces[0][0];
+    TextureData cube;
+    cube.type = TextureType::Cube;
+    cube.format = cross.format;
+    cube.source = cross.source;
+    for (const Cell& cell : vertical ? vertical_cells : horizontal_cells) {
+        Level face{size, size, std::vector<std::uint8_t>(level_size(cross.format, size, size))};
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const int sx = cell.rotated ? size - 1 - x : x, sy = cell.rotated ? size - 1 - y : y;
+                const size_t from = (static_cast<size_t>(cell.row * size + sy) * width + cell.column * size + sx) * pixel;
+                std::memcpy(&face.bytes[(static_cast<size_t>(y) * size + x) * pixel], &source.bytes[from], pixel);
+            }
+        cube.faces.push_back({std::move(face)});
+    }
+    return cube;
+}
+
+}  // namespace fxview::texture

@@ -1,0 +1,27 @@
+// Loading texture files into TextureData, chosen by extension:
+//   .png .jpg .jpeg .bmp .tga  through stb_image (RGBA8)      .hdr through stb_image (RGBA32F)
+//   .exr through tinyexr (RGBA32F)                           .dds (see dds_file.cpp)
+//   .ftxt, the float text format of the original ShaderViewer (see ftxt_file.cpp)
+// Every failure throws fxview::Error naming the file (and line, for text formats).
+#pragma once
+#include <string>
+
+#include "texture/texture_data.hpp"
+
+namespace fxview::texture {
+
+TextureData load_texture_file(const std::string& path);
+
+TextureData load_stb_image(const std::string& path);
+TextureData load_exr_texture(const std::string& path);
+TextureData load_dds(const std::string& path);
+TextureData load_ftxt(const std::string& path);
+
+// One image holding a cube map as a cross: a vertical cross when taller than wide (3x4 faces,
+// -Z stored upside down), else a horizontal cross (4x3 faces). Faces must be equal squares.
+TextureData split_cube_cross(const TextureData& cross);
+
+// A 1D texture from an image one pixel high.
+TextureData as_1d(const TextureData& image);
+
+}  // namespace fxview::texture
