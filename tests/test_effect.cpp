@@ -158,19 +158,19 @@ TEST_CASE("SAS matrices equal the GLM products") {
 TEST_CASE("--set values: numbers, vectors, hex colours, booleans; bad ones named") {
     const effect::Effect e = effect::load_effect(kCorpus + "/valid/everything.fx", load_options());
     effect::ParameterValues values = effect::default_values(e);
-    CHECK(values.at("Roughness") == std::vector<double>{0.5});
-    CHECK(!values.count("Wvp"));  // semantics are not user values
+    CHECK(values.numbers.at("Roughness") == std::vector<double>{0.5});
+    CHECK(!values.numbers.count("Wvp"));  // semantics are not user values
     effect::set_value_from_text(e, values, "Roughness=0.75");
-    CHECK(values.at("Roughness") == std::vector<double>{0.75});
+    CHECK(values.numbers.at("Roughness") == std::vector<double>{0.75});
     effect::set_value_from_text(e, values, "Tint=#ff8000");
     // sRGB 0x80 = 128/255 decodes to linear 0.21586 (IEC 61966-2-1).
-    CHECK(values.at("Tint")[0] == doctest::Approx(1.0));
-    CHECK(values.at("Tint")[1] == doctest::Approx(0.215861).epsilon(1e-5));
-    CHECK(values.at("Tint")[2] == 0.0);
+    CHECK(values.numbers.at("Tint")[0] == doctest::Approx(1.0));
+    CHECK(values.numbers.at("Tint")[1] == doctest::Approx(0.215861).epsilon(1e-5));
+    CHECK(values.numbers.at("Tint")[2] == 0.0);
     effect::set_value_from_text(e, values, "Enabled=false");
-    CHECK(values.at("Enabled") == std::vector<double>{0.0});
+    CHECK(values.numbers.at("Enabled") == std::vector<double>{0.0});
     effect::set_value_from_text(e, values, "Tint=1,0,0.5");
-    CHECK(values.at("Tint") == std::vector<double>{1, 0, 0.5});
+    CHECK(values.numbers.at("Tint") == std::vector<double>{1, 0, 0.5});
     CHECK_THROWS_WITH_AS(effect::set_value_from_text(e, values, "Tint=1,0"), doctest::Contains("vec3 needs 3"), UsageError);
     CHECK_THROWS_WITH_AS(effect::set_value_from_text(e, values, "Nope=1"), doctest::Contains("no parameter 'Nope'"), UsageError);
     CHECK_THROWS_WITH_AS(effect::set_value_from_text(e, values, "Wvp=1"), doctest::Contains("semantic"), UsageError);
@@ -196,7 +196,8 @@ TEST_CASE("debug.fx Normals renders exactly the built-in normal view") {
         debug.render(scene, view, a);
         const auto compiled = effect::compile_technique(e, *e.find_technique(technique));
         render::EffectRenderer renderer;
-        renderer.render(scene, compiled, effect::default_values(e), b);
+        render::EffectResources resources(e, effect::default_values(e), {});
+        renderer.render(scene, compiled, effect::default_values(e), resources, b);
         const auto expected = a.read_color(), actual = b.read_color();
         // Same vertex maths and the same fragment formula: the pictures agree to 1e-6 (the effect
         // computes the normal matrix from the SAS semantic, the built-in from the same GLM call).
@@ -212,7 +213,8 @@ TEST_CASE("two passes with additive blending add exactly") {
     const auto compiled = effect::compile_technique(e, e.techniques.front());
     gl::RenderTarget target({64, 64, 1, 0});
     render::EffectRenderer renderer;
-    renderer.render(scene::Scene{}, compiled, effect::default_values(e), target);
+    render::EffectResources resources(e, effect::default_values(e), {});
+    renderer.render(scene::Scene{}, compiled, effect::default_values(e), resources, target);
     const auto image = target.read_color();
     CHECK(image.pixel(32, 32)[0] == 0.5f);  // 0.25 + 0.25
     CHECK(image.pixel(32, 32)[3] == 1.0f);  // alpha masked in the second pass: not 2

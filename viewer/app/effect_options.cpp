@@ -8,7 +8,7 @@ namespace fxview::app {
 void add_effect_options(CLI::App& command, EffectOptions& options) {
     command.add_option("effect", options.path, "Effect file (.fx); without one the built-in debug shader draws");
     command.add_option("--technique,-t", options.technique, "Technique to render (default: the first)");
-    command.add_option("--set", options.sets, "Parameter value NAME=VALUE (0.5 | 1,0,0 | #rrggbb | true)")
+    command.add_option("--set", options.sets, "Parameter value NAME=VALUE (0.5 | 1,0,0 | #rrggbb | true | FILE for a sampler)")
         ->allow_extra_args(false);
 }
 
@@ -16,6 +16,11 @@ effect::LoadOptions effect_load_options() {
     const char* override_dir = std::getenv("FXVIEW_EFFECTS_DIR");
     const std::filesystem::path root = override_dir ? override_dir : FXVIEW_SOURCE_EFFECTS_DIR;
     return {{(root / "lib").string()}};
+}
+
+std::vector<std::string> texture_folders() {
+    const char* override_dir = std::getenv("FXVIEW_TEXTURES_DIR");
+    return {override_dir ? override_dir : FXVIEW_SOURCE_TEXTURES_DIR};
 }
 
 }  // namespace fxview::app

@@ -18,5 +18,8 @@ struct EffectOptions {
 
 void add_effect_options(CLI::App& command, EffectOptions& options);
 effect::LoadOptions effect_load_options();
+// Where texture files are searched after the effect's own folder: textures/ of the source tree
+// (or $FXVIEW_TEXTURES_DIR).
+std::vector<std::string> texture_folders();
 
 }  // namespace fxview::app

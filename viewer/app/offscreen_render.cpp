@@ -36,8 +36,9 @@ image::FloatImage render_offscreen(const RenderRequest& request) {
             throw UsageError(request.effect.path + " has no technique '" + request.effect.technique + "' (it has " + names + ")");
         }
         const effect::CompiledTechnique compiled = effect::compile_technique(effect, *technique);
+        render::EffectResources resources(effect, values, texture_folders());
         render::EffectRenderer renderer;
-        renderer.render(request.scene, compiled, values, target);
+        renderer.render(request.scene, compiled, values, resources, target);
     }
     image::FloatImage image = target.read_color(0);
 

@@ -7,8 +7,11 @@
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "effect/render_states.hpp"
 #include "effect/source_map.hpp"
+#include "texture/texture_data.hpp"
 
 namespace fxview::effect {
 
@@ -39,6 +42,30 @@ struct UiHints {
     std::vector<std::string> items;  // combo entries ("a|b|c" or "a,b,c")
 };
 
+// How a sampler reads its texture (from annotations or a CgFX sampler_state block).
+struct SamplerState {
+    GLenum min_filter = GL_LINEAR_MIPMAP_LINEAR;
+    GLenum mag_filter = GL_LINEAR;
+    GLenum wrap_s = GL_REPEAT, wrap_t = GL_REPEAT, wrap_r = GL_REPEAT;
+};
+
+enum class TextureStorage { Native, Unorm8, Float16, Float32 };
+
+// A texture the effect uses: loaded from a file (ResourceName) or a render target that passes
+// draw into (declared `texture NAME : RENDERCOLORTARGET`).
+struct TextureResource {
+    std::string name;
+    SourceLocation where;
+    std::vector<std::string> files;  // as written; six names for a cube from separate faces
+    texture::TextureType type = texture::TextureType::Tex2D;
+    TextureStorage storage = TextureStorage::Native;
+    bool srgb = false;
+    bool render_target = false;
+    glm::vec2 viewport_ratio{1.0f};   // render targets: size relative to the frame
+    std::optional<glm::ivec2> dimensions;  // render targets: fixed size instead
+    std::vector<Annotation> annotations;
+};
+
 struct Parameter {
     std::string type;  // GLSL type: float, vec3, int, bool, mat4, ...
     std::string name;
@@ -47,6 +74,8 @@ struct Parameter {
     std::vector<Annotation> annotations;
     std::optional<Value> default_value;
     UiHints ui;
+    std::string texture;   // samplers: the TextureResource they read
+    SamplerState sampler;  // samplers: filtering and wrapping
     SourceLocation where;
 };
 
@@ -75,12 +104,14 @@ struct Effect {
     SourceMap sources;          // the effect file and its includes
     std::string globals;        // top-level GLSL (functions, structs, consts) with #line directives
     std::vector<Parameter> parameters;
+    std::vector<TextureResource> textures;
     std::vector<ShaderBlock> shaders;
     std::vector<Technique> techniques;
 
     const Parameter* find_parameter(const std::string& name) const;
     const ShaderBlock* find_shader(const std::string& name) const;
     const Technique* find_technique(const std::string& name) const;
+    const TextureResource* find_texture(const std::string& name) const;
 };
 
 }  // namespace fxview::effect

@@ -1,5 +1,6 @@
 #include "effect/effect_program.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "effect/parser.hpp"
@@ -37,9 +38,6 @@ CompiledTechnique compile_technique(const Effect& effect, const Technique& techn
     compiled.technique = &technique;
     std::string errors;
     for (const auto& pass : technique.passes) {
-        if (!pass.states.render_target.empty())
-            throw EffectError(pass.where, "pass " + pass.name + ": RenderTarget '" + pass.states.render_target +
-                                              "' - render targets declared in effects are not supported yet");
         std::vector<gl::ShaderSource> stages;
         for (const auto& [stage, name] : pass.shaders)
             stages.push_back({gl_stage(stage), assemble_stage(effect, pass, stage), name});
@@ -77,7 +75,16 @@ CompiledTechnique compile_technique(const Effect& effect, const Technique& techn
             if (!parameter)
                 throw EffectError(pass.where, "pass " + pass.name + ": uniform '" + name +
                                                   "' is declared inside a shader block; declare it at the top level of the effect");
-            compiled_pass.uniforms.push_back({results[1], static_cast<GLenum>(results[0]), results[2], parameter});
+            BoundUniform uniform{results[1], static_cast<GLenum>(results[0]), results[2], parameter, -1};
+            if (is_sampler_type(parameter->type)) {
+                const auto& targets = pass.states.render_targets;
+                if (std::find(targets.begin(), targets.end(), parameter->texture) != targets.end())
+                    throw EffectError(pass.where, "pass " + pass.name + " samples " + parameter->texture +
+                                                      " through " + parameter->name + " while rendering into it");
+                uniform.texture_unit = compiled_pass.texture_units++;
+                glProgramUniform1i(program, uniform.location, uniform.texture_unit);
+            }
+            compiled_pass.uniforms.push_back(uniform);
         }
         compiled.passes.push_back(std::move(compiled_pass));
     }
@@ -96,8 +103,8 @@ void bind_uniforms(const CompiledPass& pass, const ParameterValues& values, cons
             data = semantic_value(p.semantic, frame, components);
             data.resize(static_cast<size_t>(components));
         } else {
-            const auto found = values.find(p.name);
-            if (found == values.end()) continue;
+            const auto found = values.numbers.find(p.name);
+            if (found == values.numbers.end()) continue;
             data.assign(found->second.begin(), found->second.end());
         }
         const GLsizei count = std::max(1, p.array_size);

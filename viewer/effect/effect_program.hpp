@@ -16,12 +16,14 @@ struct BoundUniform {
     GLenum type = 0;
     GLint array_size = 1;
     const Parameter* parameter = nullptr;
+    int texture_unit = -1;  // samplers: the unit their texture is bound to
 };
 
 struct CompiledPass {
     const Pass* pass = nullptr;
     gl::Program program;
     std::vector<BoundUniform> uniforms;
+    int texture_units = 0;
 };
 
 struct CompiledTechnique {
@@ -35,7 +37,8 @@ std::string assemble_stage(const Effect& effect, const Pass& pass, ShaderStage s
 // Throws EffectError whose message holds every compiler message mapped to `file:line`.
 CompiledTechnique compile_technique(const Effect& effect, const Technique& technique);
 
-// Sets every uniform of the pass: semantics from `frame`, the rest from `values`.
+// Sets every non-sampler uniform of the pass: semantics from `frame`, the rest from `values`.
+// (Samplers have fixed units; the renderer binds their textures.)
 void bind_uniforms(const CompiledPass& pass, const ParameterValues& values, const FrameContext& frame);
 
 }  // namespace fxview::effect

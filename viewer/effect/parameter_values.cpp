@@ -12,7 +12,7 @@ ParameterValues default_values(const Effect& effect) {
     for (const auto& p : effect.parameters) {
         if (!p.semantic.empty() || is_sampler_type(p.type)) continue;
         const size_t count = static_cast<size_t>(component_count(p.type) * std::max(1, p.array_size));
-        values[p.name] = p.default_value ? p.default_value->numbers : std::vector<double>(count, 0.0);
+        values.numbers[p.name] = p.default_value ? p.default_value->numbers : std::vector<double>(count, 0.0);
     }
     return values;
 }
@@ -34,7 +34,12 @@ void set_value_from_text(const Effect& effect, ParameterValues& values, const st
     if (!parameter) throw UsageError("--set: the effect has no parameter '" + name + "'");
     if (!parameter->semantic.empty())
         throw UsageError("--set: " + name + " is bound to the semantic " + parameter->semantic + " and set by fxview");
-    auto& target = values[name];
+    if (is_sampler_type(parameter->type)) {
+        if (text.empty()) throw UsageError("--set " + name + ": needs a texture file");
+        values.textures[name] = text;
+        return;
+    }
+    auto& target = values.numbers[name];
     std::vector<double> parsed;
     if (!text.empty() && text[0] == '#') {
         if (text.size() != 7 && text.size() != 9) throw UsageError("--set " + name + ": colour must be #rrggbb or #rrggbbaa");

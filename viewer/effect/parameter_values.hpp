@@ -9,12 +9,15 @@
 
 namespace fxview::effect {
 
-using ParameterValues = std::map<std::string, std::vector<double>>;
+struct ParameterValues {
+    std::map<std::string, std::vector<double>> numbers;  // every non-sampler parameter without a semantic
+    std::map<std::string, std::string> textures;         // sampler -> file that replaces its ResourceName
+};
 
 ParameterValues default_values(const Effect& effect);  // zeros where the file gives no default
 
 // Parses NAME=VALUE as the command line writes it: 0.5, 1,0,0, #rrggbb (sRGB hex, stored linear),
-// true/false. Throws UsageError naming the parameter for an unknown name or a malformed value.
+// true/false, or a file path for a sampler. Throws UsageError naming the parameter for an unknown name or a malformed value.
 void set_value_from_text(const Effect& effect, ParameterValues& values, const std::string& assignment);
 
 }  // namespace fxview::effect

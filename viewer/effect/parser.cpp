@@ -8,6 +8,7 @@
 
 #include "effect/lexer.hpp"
 #include "effect/semantics.hpp"
+#include "effect/texture_annotations.hpp"
 
 namespace fxview::effect {
 
@@ -30,6 +31,11 @@ const Parameter* Effect::find_parameter(const std::string& name) const {
 const ShaderBlock* Effect::find_shader(const std::string& name) const {
     for (const auto& s : shaders)
         if (s.name == name) return &s;
+    return nullptr;
+}
+const TextureResource* Effect::find_texture(const std::string& name) const {
+    for (const auto& t : textures)
+        if (t.name == name) return &t;
     return nullptr;
 }
 const Technique* Effect::find_technique(const std::string& name) const {
@@ -61,6 +67,10 @@ public:
                 parse_parameter();
             } else if (token.kind == TokenKind::Identifier && (token.text == "GLSLShader" || token.text == "shader")) {
                 parse_shader_block();
+            } else if (token.kind == TokenKind::Identifier &&
+                       (token.text == "texture" || token.text == "texture1D" || token.text == "texture2D" ||
+                        token.text == "textureCUBE")) {
+                parse_texture();
             } else if (token.kind == TokenKind::Identifier && token.text == "technique") {
                 parse_technique();
             } else {
@@ -213,7 +223,9 @@ private:
         if (!parameter.semantic.empty() && !is_known_semantic(parameter.semantic))
             fail(name, "unknown semantic '" + parameter.semantic + "' on " + parameter.name);
         parameter.annotations = parse_annotations();
-        if (accept('=')) {
+        if (is_sampler_type(parameter.type)) {
+            parse_sampler(parameter, name);
+        } else if (accept('=')) {
             const Token first = lexer_.peek();
             parameter.default_value = parse_value();
             check_default(parameter, first);
@@ -221,6 +233,83 @@ private:
         expect(';', "after the declaration of " + parameter.name);
         parameter.ui = ui_hints_from(parameter.annotations);
         effect_.parameters.push_back(std::move(parameter));
+    }
+
+    // A sampler reads a texture named in a sampler_state block (CgFX), in a `Texture` annotation,
+    // or declared by its own ResourceName annotations (an implicit texture of the same name).
+    void parse_sampler(Parameter& parameter, const Token& name) {
+        apply_sampler_annotations(parameter.sampler, parameter.annotations);
+        for (const auto& a : parameter.annotations)
+            if (lower(a.name) == "texture") {
+                if (!a.value.is_string) throw EffectError(a.where, "annotation Texture needs a texture name string");
+                parameter.texture = a.value.text;
+            }
+        TextureResource implicit;
+        implicit.name = parameter.name;
+        implicit.where = parameter.where;
+        implicit.type = parameter.type == "sampler1D" ? texture::TextureType::Tex1D
+                      : parameter.type == "samplerCube" ? texture::TextureType::Cube
+                                                        : texture::TextureType::Tex2D;
+        if (apply_texture_annotations(implicit, parameter.annotations)) {
+            if (implicit.files.empty()) throw EffectError(parameter.where, "sampler " + parameter.name + " has texture annotations but no ResourceName");
+            implicit.annotations = parameter.annotations;
+            add_texture(std::move(implicit), name);
+            parameter.texture = parameter.name;
+        }
+        if (!accept('=')) return;
+        const Token keyword = expect_identifier("sampler_state after '='");
+        if (keyword.text != "sampler_state") fail(keyword, "a sampler's value must be sampler_state { ... }");
+        const Token open = expect('{', "to open sampler_state");
+        while (!accept('}')) {
+            const Token state = next();
+            if (state.kind == TokenKind::End) fail(open, "unterminated sampler_state: '{' is never closed");
+            if (state.kind != TokenKind::Identifier) fail(state, "expected a sampler state name, found '" + state.text + "'");
+            expect('=', "after " + state.text);
+            if (lower(state.text) == "texture") {
+                const bool angled = accept('<');
+                parameter.texture = expect_identifier("a texture name").text;
+                texture_uses_.push_back({state, parameter.texture});
+                if (angled) expect('>', "after the texture name");
+            } else {
+                const Token value = expect_identifier("a sampler state value");
+                set_sampler_state(parameter.sampler, state.text, value.text, at(value));
+            }
+            expect(';', "after the value of " + state.text);
+        }
+    }
+
+    void add_texture(TextureResource texture, const Token& name) {
+        if (const TextureResource* existing = effect_.find_texture(texture.name))
+            fail(name, "texture '" + texture.name + "' declared twice (first at " + existing->where.str() + ")");
+        effect_.textures.push_back(std::move(texture));
+    }
+
+    // texture NAME [: RENDERCOLORTARGET] < annotations >;
+    void parse_texture() {
+        const Token keyword = next();
+        TextureResource texture;
+        if (keyword.text == "texture1D") texture.type = texture::TextureType::Tex1D;
+        if (keyword.text == "textureCUBE") texture.type = texture::TextureType::Cube;
+        const Token name = expect_identifier("a texture name");
+        texture.name = name.text;
+        texture.where = at(name);
+        if (accept(':')) {
+            const Token semantic = expect_identifier("a texture semantic after ':'");
+            if (lower(semantic.text) != "rendercolortarget")
+                fail(semantic, "unknown texture semantic '" + semantic.text + "' (expected RENDERCOLORTARGET)");
+            texture.render_target = true;
+            texture.storage = TextureStorage::Float32;
+        }
+        texture.annotations = parse_annotations();
+        apply_texture_annotations(texture, texture.annotations);
+        expect(';', "after the declaration of texture " + texture.name);
+        if (texture.render_target && !texture.files.empty())
+            fail(name, "render target " + texture.name + " cannot have a ResourceName");
+        if (texture.render_target && texture.type != texture::TextureType::Tex2D)
+            fail(name, "render target " + texture.name + " must be 2D");
+        if (!texture.render_target && texture.files.empty())
+            fail(name, "texture " + texture.name + " needs a ResourceName annotation (or ': RENDERCOLORTARGET')");
+        add_texture(std::move(texture), name);
     }
 
     void check_default(Parameter& parameter, const Token& first) {
@@ -356,11 +445,26 @@ private:
             throw EffectError({effect_.path, 1}, "the effect defines no technique");
         for (const auto& [token, stage] : shader_uses_)
             if (!effect_.find_shader(token.text)) fail(token, "unknown shader '" + token.text + "'");
+        for (const auto& [token, name] : texture_uses_)
+            if (!effect_.find_texture(name)) fail(token, "unknown texture '" + name + "'");
+        for (const auto& p : effect_.parameters)
+            if (is_sampler_type(p.type) && !p.texture.empty() && !effect_.find_texture(p.texture))
+                throw EffectError(p.where, "sampler " + p.name + " reads unknown texture '" + p.texture + "'");
+        for (const auto& technique : effect_.techniques)
+            for (const auto& pass : technique.passes)
+                for (const auto& target : pass.states.render_targets) {
+                    const TextureResource* texture = effect_.find_texture(target);
+                    if (target.empty()) throw EffectError(pass.where, "pass " + pass.name + " leaves a gap in its render targets");
+                    if (!texture || !texture->render_target)
+                        throw EffectError(pass.where, "pass " + pass.name + " renders into '" + target +
+                                                          "', which is not declared as texture " + target + " : RENDERCOLORTARGET");
+                }
     }
 
     Effect& effect_;
     Lexer lexer_;
     std::vector<std::pair<Token, ShaderStage>> shader_uses_;
+    std::vector<std::pair<Token, std::string>> texture_uses_;
 };
 
 }  // namespace

@@ -82,7 +82,7 @@ const std::vector<std::string>& render_state_names() {
     static const std::vector<std::string> names = {
         "DepthTestEnable", "DepthMask", "DepthWriteEnable", "DepthFunc", "CullFaceEnable", "CullFace", "CullMode",
         "BlendEnable", "BlendFunc", "BlendEquation", "ColorMask", "PolygonMode", "Clear", "ClearColor", "ClearDepth",
-        "RenderTarget"};
+        "RenderTarget", "RenderColorTarget0..7", "Draw"};
     return names;
 }
 
@@ -135,9 +135,21 @@ void set_render_state(RenderStates& s, const std::string& name, const StateValue
     } else if (key == "cleardepth") {
         s.clear_depth = numbers(name, value, 1, where)[0];
         s.clear = true;
-    } else if (key == "rendertarget") {
-        if (value.words.size() != 1) throw EffectError(where, "render state RenderTarget needs a target name");
-        s.render_target = value.words[0];
+    } else if (key == "rendertarget") {  // RenderTarget = A; or RenderTarget = (A, B);
+        if (value.words.empty() || value.words.size() != value.is_number.size())
+            throw EffectError(where, "render state RenderTarget needs one or more target names");
+        s.render_targets = value.words;
+    } else if (key.rfind("rendercolortarget", 0) == 0 && key.size() == 18 && key[17] >= '0' && key[17] <= '7') {
+        if (value.words.size() != 1 || value.is_number.size() != 1)
+            throw EffectError(where, "render state " + name + " needs a target name");
+        const size_t index = static_cast<size_t>(key[17] - '0');
+        if (s.render_targets.size() <= index) s.render_targets.resize(index + 1);
+        s.render_targets[index] = value.words[0];
+    } else if (key == "draw") {
+        const std::string what = value.words.size() == 1 ? lower(value.words[0]) : "";
+        if (what != "geometry" && what != "buffer")
+            throw EffectError(where, "render state Draw needs Geometry or Buffer, got '" + describe(value) + "'");
+        s.draw_buffer = what == "buffer";
     } else {
         throw EffectError(where, "unknown render state '" + name + "'");
     }

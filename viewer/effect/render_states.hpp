@@ -26,7 +26,8 @@ struct RenderStates {
     bool clear = false;  // clear the target before the pass (the first pass always clears)
     std::optional<std::array<float, 4>> clear_color;
     std::optional<float> clear_depth;
-    std::string render_target;  // empty: the frame's target
+    std::vector<std::string> render_targets;  // colour attachments by index; empty: the frame's target
+    bool draw_buffer = false;  // Draw = Buffer: one full-screen triangle instead of the scene's objects
 };
 
 // The right-hand side of `State = value;`: words and numbers in order, e.g. (SrcAlpha, OneMinusSrcAlpha).

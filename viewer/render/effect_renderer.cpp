@@ -1,12 +1,52 @@
 #include "render/effect_renderer.hpp"
 
+#include <set>
+
 #include "effect/render_states.hpp"
 
 namespace fxview::render {
 
+EffectRenderer::PassFramebuffer& EffectRenderer::bind_pass_targets(const effect::Pass& pass,
+                                                                   const EffectResources& resources) {
+    std::vector<GLuint> textures;
+    int width = 0, height = 0;
+    for (const auto& name : pass.states.render_targets) {
+        const GpuTexture* target = resources.find(name);
+        if (!target) throw effect::EffectError(pass.where, "render target " + name + " was not created");
+        if (!textures.empty() && (target->width != width || target->height != height))
+            throw effect::EffectError(pass.where, "pass " + pass.name + " renders into targets of different sizes");
+        width = target->width;
+        height = target->height;
+        textures.push_back(target->texture.get());
+    }
+    PassFramebuffer& entry = pass_framebuffers_[&pass];
+    if (entry.attached != textures || entry.width != width || entry.height != height) {
+        entry.framebuffer = gl::create_framebuffer();
+        entry.depth = gl::create_renderbuffer();
+        glNamedRenderbufferStorage(entry.depth.get(), GL_DEPTH_COMPONENT32F, width, height);
+        std::vector<GLenum> buffers;
+        for (size_t i = 0; i < textures.size(); ++i) {
+            glNamedFramebufferTexture(entry.framebuffer.get(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), textures[i], 0);
+            buffers.push_back(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i));
+        }
+        glNamedFramebufferRenderbuffer(entry.framebuffer.get(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, entry.depth.get());
+        glNamedFramebufferDrawBuffers(entry.framebuffer.get(), static_cast<GLsizei>(buffers.size()), buffers.data());
+        if (glCheckNamedFramebufferStatus(entry.framebuffer.get(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw effect::EffectError(pass.where, "pass " + pass.name + ": its render targets do not form a complete framebuffer");
+        entry.attached = textures;
+        entry.width = width;
+        entry.height = height;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, entry.framebuffer.get());
+    glViewport(0, 0, width, height);
+    return entry;
+}
+
 void EffectRenderer::render(const scene::Scene& scene, const effect::CompiledTechnique& technique,
-                            const effect::ParameterValues& values, const gl::RenderTarget& target, FrameTiming timing) {
-    target.bind_for_drawing();
+                            const effect::ParameterValues& values, EffectResources& resources,
+                            const gl::RenderTarget& target, FrameTiming timing) {
+    resources.fit_render_targets(target.width(), target.height());
+    if (!empty_vertex_array_) empty_vertex_array_ = gl::create_vertex_array();
     effect::FrameContext frame;
     const float aspect = static_cast<float>(target.width()) / static_cast<float>(target.height());
     frame.view = math::view_matrix(scene.camera.pose);
@@ -14,15 +54,22 @@ void EffectRenderer::render(const scene::Scene& scene, const effect::CompiledTec
         math::perspective_matrix(scene.camera.fov_y_degrees, aspect, scene.camera.near_plane, scene.camera.far_plane);
     frame.camera_position = math::camera_world_position(scene.camera.pose);
     frame.light_position = scene.light.world_position();
-    frame.viewport_size = {static_cast<float>(target.width()), static_cast<float>(target.height())};
     frame.time = timing.time;
     frame.frame = timing.frame;
 
-    for (size_t p = 0; p < technique.passes.size(); ++p) {
-        const effect::CompiledPass& pass = technique.passes[p];
+    std::set<const void*> cleared;  // targets cleared this frame: each is cleared before its first pass
+    for (const effect::CompiledPass& pass : technique.passes) {
         const effect::RenderStates& states = pass.pass->states;
-        effect::apply_render_states(states);
-        if (p == 0 || states.clear) {
+        const void* destination = &target;
+        if (states.render_targets.empty()) {
+            target.bind_for_drawing();
+            frame.viewport_size = {static_cast<float>(target.width()), static_cast<float>(target.height())};
+        } else {
+            const PassFramebuffer& framebuffer = bind_pass_targets(*pass.pass, resources);
+            destination = &framebuffer;
+            frame.viewport_size = {static_cast<float>(framebuffer.width), static_cast<float>(framebuffer.height)};
+        }
+        if (cleared.insert(destination).second || states.clear) {
             // Clearing must reach every channel and the depth buffer whatever the pass's masks say.
             glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
             glDepthMask(GL_TRUE);
@@ -31,18 +78,38 @@ void EffectRenderer::render(const scene::Scene& scene, const effect::CompiledTec
             glClearColor(color[0], color[1], color[2], color[3]);
             glClearDepth(states.clear_depth.value_or(1.0f));
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-            effect::apply_render_states(states);
         }
+        effect::apply_render_states(states);
         glUseProgram(pass.program.get());
-        for (const auto& object : scene.objects) {
-            frame.world = math::world_matrix(object.pose, object.scale);
-            effect::bind_uniforms(pass, values, frame);
-            meshes_.get(object.mesh).draw();
+        for (const auto& uniform : pass.uniforms) {
+            if (uniform.texture_unit < 0) continue;
+            const effect::Parameter& sampler = *uniform.parameter;
+            const GpuTexture* texture = resources.find(sampler.texture);
+            if (!texture)
+                throw effect::EffectError(sampler.where, "sampler " + sampler.name +
+                                                             " has no texture (give it a ResourceName, a sampler_state "
+                                                             "Texture, or --set " + sampler.name + "=FILE)");
+            glBindTextureUnit(static_cast<GLuint>(uniform.texture_unit), texture->texture.get());
+            glBindSampler(static_cast<GLuint>(uniform.texture_unit), resources.sampler(sampler.sampler));
         }
+        if (states.draw_buffer) {
+            frame.world = glm::mat4(1.0f);
+            effect::bind_uniforms(pass, values, frame);
+            glBindVertexArray(empty_vertex_array_.get());
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            glBindVertexArray(0);
+        } else {
+            for (const auto& object : scene.objects) {
+                frame.world = math::world_matrix(object.pose, object.scale);
+                effect::bind_uniforms(pass, values, frame);
+                meshes_.get(object.mesh).draw();
+            }
+        }
+        for (const auto& uniform : pass.uniforms)
+            if (uniform.texture_unit >= 0) glBindSampler(static_cast<GLuint>(uniform.texture_unit), 0);
     }
     glUseProgram(0);
     effect::apply_render_states({});
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     target.resolve();
 }
 

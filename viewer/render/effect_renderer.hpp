@@ -1,8 +1,12 @@
 // Draws a scene with one technique of an effect: pass after pass, each with its own render states
-// (reset to the defaults first, as in CgFX), every object with its SAS matrices.
+// (reset to the defaults first, as in CgFX), into the frame's target or the effect's render
+// targets, drawing every object with its SAS matrices, or one full-screen triangle (Draw = Buffer).
 #pragma once
+#include <map>
+
 #include "effect/effect_program.hpp"
 #include "gl/render_target.hpp"
+#include "render/effect_resources.hpp"
 #include "render/mesh_cache.hpp"
 #include "scene/scene.hpp"
 
@@ -16,10 +20,23 @@ struct FrameTiming {
 class EffectRenderer {
 public:
     void render(const scene::Scene& scene, const effect::CompiledTechnique& technique,
-                const effect::ParameterValues& values, const gl::RenderTarget& target, FrameTiming timing = {});
+                const effect::ParameterValues& values, EffectResources& resources, const gl::RenderTarget& target,
+                FrameTiming timing = {});
+    // Forgets per-pass framebuffers (call when the effect is replaced).
+    void reset() { pass_framebuffers_.clear(); }
 
 private:
+    struct PassFramebuffer {
+        gl::Framebuffer framebuffer;
+        gl::Renderbuffer depth;
+        std::vector<GLuint> attached;
+        int width = 0, height = 0;
+    };
+    PassFramebuffer& bind_pass_targets(const effect::Pass& pass, const EffectResources& resources);
+
     MeshCache meshes_;
+    gl::VertexArray empty_vertex_array_;  // full-screen passes generate their vertices from gl_VertexID
+    std::map<const effect::Pass*, PassFramebuffer> pass_framebuffers_;
 };
 
 }  // namespace fxview::render

@@ -1,0 +1,151 @@
+#include "render/effect_resources.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include "gl/texture_upload.hpp"
+#include "texture/texture_file.hpp"
+
+namespace fxview::render {
+
+namespace fs = std::filesystem;
+using texture::TextureData;
+using texture::TextureType;
+
+std::string resolve_texture_path(const std::string& file, const std::string& effect_path,
+                                 const std::vector<std::string>& texture_dirs) {
+    std::vector<fs::path> candidates;
+    if (fs::path(file).is_absolute()) candidates.push_back(file);
+    else {
+        candidates.push_back(fs::path(effect_path).parent_path() / file);
+        for (const auto& dir : texture_dirs) candidates.push_back(fs::path(dir) / file);
+    }
+    for (const auto& candidate : candidates)
+        if (fs::is_regular_file(candidate)) return candidate.lexically_normal().string();
+    std::string searched;
+    for (const auto& candidate : candidates) searched += (searched.empty() ? "" : ", ") + candidate.parent_path().string();
+    throw Error("texture file '" + file + "' not found (searched " + searched + ")");
+}
+
+namespace {
+
+// Loads a texture resource's file(s) into the shape its declaration asks for.
+TextureData load_resource(const effect::TextureResource& resource, const std::vector<std::string>& paths) {
+    if (resource.type == TextureType::Cube && paths.size() == 6) {
+        TextureData cube;
+        cube.type = TextureType::Cube;
+        for (const auto& path : paths) {
+            TextureData face = texture::load_texture_file(path);
+            if (face.width() != face.height()) throw Error(path + ": cube faces must be square");
+            if (!cube.faces.empty() && (face.width() != cube.width() || face.format != cube.format))
+                throw Error(path + ": cube faces must share one size and format");
+            cube.format = face.format;
+            cube.source += (cube.source.empty() ? "" : ";") + path;
+            cube.faces.push_back(std::move(face.faces[0]));
+        }
+        return cube;
+    }
+    if (paths.size() != 1)
+        throw Error("texture " + resource.name + " names " + std::to_string(paths.size()) +
+                    " files; only a cube map takes six");
+    TextureData data = texture::load_texture_file(paths[0]);
+    switch (resource.type) {
+        case TextureType::Cube: return data.type == TextureType::Cube ? data : texture::split_cube_cross(data);
+        case TextureType::Tex1D: return texture::as_1d(data);
+        case TextureType::Tex2D:
+            if (data.type == TextureType::Cube) throw Error(paths[0] + ": holds a cube map, but " + resource.name + " is 2D");
+            return data;
+    }
+    return data;
+}
+
+texture::PixelFormat storage_format(effect::TextureStorage storage, texture::PixelFormat native) {
+    switch (storage) {
+        case effect::TextureStorage::Unorm8: return texture::PixelFormat::RGBA8;
+        case effect::TextureStorage::Float16: return texture::PixelFormat::RGBA16F;
+        case effect::TextureStorage::Float32: return texture::PixelFormat::RGBA32F;
+        case effect::TextureStorage::Native: return native;
+    }
+    return native;
+}
+
+}  // namespace
+
+EffectResources::EffectResources(const effect::Effect& effect, const effect::ParameterValues& values,
+                                 const std::vector<std::string>& texture_dirs)
+    : effect_(effect) {
+    for (const auto& resource : effect.textures) {
+        if (resource.render_target) continue;
+        try {
+            std::vector<std::string> paths;
+            // `--set Sampler=file` replaces the file of the sampler's own texture.
+            const auto override_file = values.textures.find(resource.name);
+            if (override_file != values.textures.end()) {
+                if (!fs::is_regular_file(override_file->second)) throw Error(override_file->second + ": no such texture file");
+                paths.push_back(override_file->second);
+            } else {
+                for (const auto& file : resource.files) paths.push_back(resolve_texture_path(file, effect.path, texture_dirs));
+            }
+            TextureData data = load_resource(resource, paths);
+            data = texture::convert(data, storage_format(resource.storage, data.format));
+            GpuTexture gpu;
+            gpu.texture = gl::upload_texture(data, {resource.srgb, true});
+            gpu.type = data.type;
+            gpu.format = data.format;
+            gpu.width = data.width();
+            gpu.height = data.height();
+            gpu.levels = data.levels();
+            gpu.source = data.source;
+            textures_.emplace(resource.name, std::move(gpu));
+        } catch (const effect::EffectError&) {
+            throw;
+        } catch (const std::exception& error) {
+            throw effect::EffectError(resource.where, "texture " + resource.name + ": " + error.what());
+        }
+    }
+}
+
+void EffectResources::fit_render_targets(int frame_width, int frame_height) {
+    for (const auto& resource : effect_.textures) {
+        if (!resource.render_target) continue;
+        const glm::ivec2 size = resource.dimensions.value_or(glm::ivec2(
+            std::max(1, static_cast<int>(std::lround(frame_width * resource.viewport_ratio.x))),
+            std::max(1, static_cast<int>(std::lround(frame_height * resource.viewport_ratio.y)))));
+        const auto found = textures_.find(resource.name);
+        if (found != textures_.end() && found->second.width == size.x && found->second.height == size.y) continue;
+        GpuTexture gpu;
+        gpu.format = storage_format(resource.storage, texture::PixelFormat::RGBA32F);
+        if (texture::is_compressed(gpu.format)) gpu.format = texture::PixelFormat::RGBA32F;
+        const GLenum internal = gpu.format == texture::PixelFormat::RGBA8     ? GL_RGBA8
+                                : gpu.format == texture::PixelFormat::RGBA16F ? GL_RGBA16F
+                                                                               : GL_RGBA32F;
+        gpu.texture = gl::create_texture(GL_TEXTURE_2D);
+        glTextureStorage2D(gpu.texture.get(), 1, internal, size.x, size.y);
+        gpu.width = size.x;
+        gpu.height = size.y;
+        gpu.source = "render target";
+        textures_.insert_or_assign(resource.name, std::move(gpu));
+    }
+}
+
+const GpuTexture* EffectResources::find(const std::string& texture_name) const {
+    const auto found = textures_.find(texture_name);
+    return found == textures_.end() ? nullptr : &found->second;
+}
+
+GLuint EffectResources::sampler(const effect::SamplerState& state) {
+    const std::vector<GLenum> key = {state.min_filter, state.mag_filter, state.wrap_s, state.wrap_t, state.wrap_r};
+    auto found = samplers_.find(key);
+    if (found == samplers_.end()) {
+        gl::Sampler sampler = gl::create_sampler();
+        glSamplerParameteri(sampler.get(), GL_TEXTURE_MIN_FILTER, static_cast<GLint>(state.min_filter));
+        glSamplerParameteri(sampler.get(), GL_TEXTURE_MAG_FILTER, static_cast<GLint>(state.mag_filter));
+        glSamplerParameteri(sampler.get(), GL_TEXTURE_WRAP_S, static_cast<GLint>(state.wrap_s));
+        glSamplerParameteri(sampler.get(), GL_TEXTURE_WRAP_T, static_cast<GLint>(state.wrap_t));
+        glSamplerParameteri(sampler.get(), GL_TEXTURE_WRAP_R, static_cast<GLint>(state.wrap_r));
+        found = samplers_.emplace(key, std::move(sampler)).first;
+    }
+    return found->second.get();
+}
+
+}  // namespace fxview::render

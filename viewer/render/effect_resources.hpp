@@ -1,0 +1,48 @@
+// The GPU resources of one loaded effect: its file textures (loaded, converted and uploaded once),
+// its render targets (sized from the frame, recreated when the frame size changes) and sampler
+// objects. Texture files are searched next to the effect, then in the texture folders.
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "effect/effect.hpp"
+#include "effect/parameter_values.hpp"
+#include "gl/objects.hpp"
+#include "texture/texture_data.hpp"
+
+namespace fxview::render {
+
+struct GpuTexture {
+    gl::Texture texture;
+    texture::TextureType type = texture::TextureType::Tex2D;
+    texture::PixelFormat format = texture::PixelFormat::RGBA8;
+    int width = 0, height = 0, levels = 1;
+    std::string source;  // file(s), or "render target"
+};
+
+class EffectResources {
+public:
+    // Throws EffectError at the texture's declaration for a missing, unreadable or unfit file.
+    EffectResources(const effect::Effect& effect, const effect::ParameterValues& values,
+                    const std::vector<std::string>& texture_dirs);
+
+    // Makes every render target match the frame size (times its ViewportRatio, or its Dimensions).
+    void fit_render_targets(int frame_width, int frame_height);
+    const GpuTexture* find(const std::string& texture_name) const;
+    GLuint sampler(const effect::SamplerState& state);
+    const std::map<std::string, GpuTexture>& textures() const { return textures_; }
+
+private:
+    const effect::Effect& effect_;
+    std::map<std::string, GpuTexture> textures_;
+    std::map<std::vector<GLenum>, gl::Sampler> samplers_;
+};
+
+// The file a texture name refers to: absolute, next to the effect, or in one of the folders.
+std::string resolve_texture_path(const std::string& file, const std::string& effect_path,
+                                 const std::vector<std::string>& texture_dirs);
+
+}  // namespace fxview::render
