@@ -18,6 +18,7 @@
 #include "gl/render_target.hpp"
 #include "render/debug_renderer.hpp"
 #include "render/effect_renderer.hpp"
+#include "texture/texture_file.hpp"
 
 using namespace fxview;
 namespace fs = std::filesystem;
@@ -44,6 +45,7 @@ std::string first_error(const std::string& path) {
         const effect::Effect effect = effect::load_effect(path, load_options());
         shared_context();
         for (const auto& technique : effect.techniques) effect::compile_technique(effect, technique);
+        render::EffectResources resources(effect, effect::default_values(effect), {});
     } catch (const effect::EffectError& error) {
         return error.what();
     }
@@ -219,4 +221,55 @@ TEST_CASE("two passes with additive blending add exactly") {
     CHECK(image.pixel(32, 32)[0] == 0.5f);  // 0.25 + 0.25
     CHECK(image.pixel(32, 32)[3] == 1.0f);  // alpha masked in the second pass: not 2
     CHECK(image.pixel(0, 0)[0] == 0.0f);    // background untouched
+}
+
+TEST_CASE("multi-pass through render targets (MRT, full-screen pass) equals twice the normal view") {
+    shared_context();
+    const effect::Effect e = effect::load_effect(kCorpus + "/valid/multipass.fx", load_options());
+    const auto compiled = effect::compile_technique(e, e.techniques.front());
+    render::EffectResources resources(e, effect::default_values(e), {});
+    scene::Scene scene;
+    gl::RenderTarget target({80, 64, 1, 0}), reference({80, 64, 1, 0});
+    render::EffectRenderer renderer;
+    renderer.render(scene, compiled, effect::default_values(e), resources, target);
+    render::DebugRenderer debug;
+    debug.render(scene, render::DebugView::Normals, reference);
+    const auto actual = target.read_color(), expected = reference.read_color();
+    int mismatches = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 80; ++x)
+            for (int c = 0; c < 4; ++c) {
+                const float want = c < 3 ? 2.0f * expected.pixel(x, y)[c] : expected.pixel(x, y)[c];
+                // 1e-6: the G-buffer pass and the built-in view evaluate the same expression.
+                if (std::abs(actual.pixel(x, y)[c] - want) > 1e-6f) ++mismatches;
+            }
+    CHECK(mismatches == 0);
+    // The render targets follow the frame size.
+    CHECK(resources.find("Normals")->width == 80);
+    CHECK(resources.find("Coords")->height == 64);
+}
+
+TEST_CASE("a texture file sampled with nearest filtering comes back texel for texel") {
+    shared_context();
+    const effect::Effect e = effect::load_effect(kCorpus + "/valid/textured.fx", load_options());
+    const auto compiled = effect::compile_technique(e, e.techniques.front());
+    render::EffectResources resources(e, effect::default_values(e), {});
+    CHECK(resources.find("Image")->format == texture::PixelFormat::RGBA32F);
+    CHECK(resources.find("Quantised")->format == texture::PixelFormat::RGBA8);  // Format = "8"
+    gl::RenderTarget target({4, 2, 2, 0});
+    render::EffectRenderer renderer;
+    renderer.render(scene::Scene{}, compiled, effect::default_values(e), resources, target);
+    const auto image = target.read_color(0), quantised = target.read_color(1);
+    const texture::TextureData file = texture::load_texture_file(kCorpus + "/valid/pattern.ftxt");
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 4; ++x) {
+            float expected[4];
+            texture::read_texel(file, 0, 0, x, y, expected);
+            for (int c = 0; c < 4; ++c) {
+                CHECK(image.pixel(x, y)[c] == expected[c]);  // float texture: exact
+                // 8-bit storage: the value rounded to the nearest of 256 codes (clamped to [0,1]).
+                const float code = std::round(std::clamp(expected[c], 0.0f, 1.0f) * 255.0f) / 255.0f;
+                CHECK(std::abs(quantised.pixel(x, y)[c] - code) <= 1e-6f);
+            }
+        }
 }

@@ -5,6 +5,7 @@
 #include "context/context.hpp"
 #include "effect/effect_program.hpp"
 #include "effect/parser.hpp"
+#include "render/effect_resources.hpp"
 
 namespace fxview::app {
 
@@ -36,6 +37,12 @@ CommandRunner add_check_command(CLI::App& app) {
                         if (std::string(error.what()).back() != '\n') std::cout << "\n";
                         ++broken;
                     }
+                }
+                try {  // textures: every file found, readable and of the declared shape
+                    render::EffectResources resources(effect, effect::default_values(effect), texture_folders());
+                } catch (const effect::EffectError& error) {
+                    std::cout << error.what() << "\n";
+                    ++broken;
                 }
                 if (broken == 0) std::cout << path << ": ok (" << effect.techniques.size() << " techniques)\n";
                 failures += broken;
