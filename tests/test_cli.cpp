@@ -199,3 +199,18 @@ TEST_CASE("render EFFECT --technique Normals matches the built-in normal image; 
     CHECK(run("render " + debug_fx + " -t Plain --set Ambient=2,3 --out " + temp_path("x.png")).exit_code == 2);
     CHECK(run("render " + debug_fx + " -t Plain --set PlainColor=#ff8000 --out " + temp_path("plain.png")).exit_code == 0);
 }
+
+TEST_CASE("--save-preset then --preset reproduces the picture; a broken preset is exit 1") {
+    const std::string debug_fx = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/debug.fx";
+    const std::string preset = temp_path("plain.json"), first = temp_path("first.pfm"), second = temp_path("second.pfm");
+    REQUIRE(run("render " + debug_fx + " -t Plain --set PlainColor=0.2,0.4,0.6 --set Ambient=0.3 --size 32x32 --save-preset " +
+                preset + " --out " + first).exit_code == 0);
+    REQUIRE(run("render " + debug_fx + " -t Plain --preset " + preset + " --size 32x32 --out " + second).exit_code == 0);
+    CHECK(fxview::image::read_pfm(first).data == fxview::image::read_pfm(second).data);
+    const auto json = nlohmann::json::parse(std::ifstream(preset));
+    CHECK(json["parameters"]["Ambient"].get<double>() == doctest::Approx(0.3));
+    std::ofstream(temp_path("broken.json")) << "[1, 2";
+    const Result r = run("render " + debug_fx + " --preset " + temp_path("broken.json") + " --out " + temp_path("x.png"));
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("broken.json") != std::string::npos);
+}

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -17,7 +18,9 @@
 #include "effect/parser.hpp"
 #include "gl/render_target.hpp"
 #include "render/debug_renderer.hpp"
+#include "effect/preset.hpp"
 #include "render/effect_renderer.hpp"
+#include "render/effect_session.hpp"
 #include "texture/texture_file.hpp"
 
 using namespace fxview;
@@ -272,4 +275,90 @@ TEST_CASE("a texture file sampled with nearest filtering comes back texel for te
                 CHECK(std::abs(quantised.pixel(x, y)[c] - code) <= 1e-6f);
             }
         }
+}
+
+namespace {
+
+void write_text(const std::string& path, const std::string& text) {
+    std::ofstream(path) << text;
+    // File times can be coarse: move the modification time on explicitly so the change is seen.
+    fs::last_write_time(path, fs::last_write_time(path) + std::chrono::seconds(2));
+}
+
+std::string temp_path(const std::string& name) {
+    fs::create_directories(FXVIEW_TEST_TMP);
+    return std::string(FXVIEW_TEST_TMP) + "/" + name;
+}
+
+std::string constant_effect(const std::string& declarations, const std::string& body) {
+    return "#include \"fullscreen.glsl\"\n" + declarations +
+           "\nGLSLShader FS { layout(location = 0) out vec4 c; void main() { " + body + " } }\n"
+           "technique T { pass p { VertexShader = FullscreenVS; FragmentShader = FS; Draw = Buffer; } }\n";
+}
+
+}  // namespace
+
+TEST_CASE("hot reload keeps the last good effect and the edited values") {
+    shared_context();
+    const std::string path = temp_path("reload.fx");
+    write_text(path, constant_effect("uniform float Gain = 0.25;\nuniform vec3 Tint = {1, 1, 1};", "c = vec4(Tint * Gain, 1.0);"));
+    render::EffectSession session(path, load_options(), {});
+    session.values().numbers["Gain"] = {0.5};  // the user's edit
+    gl::RenderTarget target({4, 4, 1, 0});
+    const auto red_at_centre = [&] {
+        session.render(scene::Scene{}, target);
+        return target.read_color().pixel(2, 2)[0];
+    };
+    CHECK(red_at_centre() == 0.5f);
+    CHECK(!session.files_changed());
+
+    // A GLSL error: the reload fails with file:line, the old effect keeps rendering with the edit.
+    write_text(path, constant_effect("uniform float Gain = 0.25;\nuniform vec3 Tint = {1, 1, 1};", "c = vec4(Tint * Gain, 1.0) +;"));
+    CHECK(session.files_changed());
+    const auto error = session.reload_if_changed();
+    REQUIRE(error.has_value());
+    CHECK(error->find("reload.fx:4: error") != std::string::npos);
+    CHECK(red_at_centre() == 0.5f);
+    CHECK(!session.files_changed());  // the broken version is not retried every frame
+
+    // Fixed, with Tint changed from vec3 to float: Gain keeps the edit, Tint takes its new default.
+    write_text(path, constant_effect("uniform float Gain = 0.25;\nuniform float Tint = 2.0;", "c = vec4(vec3(Tint * Gain), 1.0);"));
+    CHECK(!session.reload_if_changed().has_value());
+    CHECK(session.values().numbers.at("Gain") == std::vector<double>{0.5});
+    CHECK(session.values().numbers.at("Tint") == std::vector<double>{2.0});
+    CHECK(red_at_centre() == 1.0f);
+
+    // An include that changes triggers the reload too.
+    const std::string include = temp_path("reload_part.glsl");
+    write_text(include, "float part() { return 0.125; }\n");
+    write_text(path, "#include \"reload_part.glsl\"\n" + constant_effect("uniform float Gain = 0.25;", "c = vec4(vec3(part() + 0.0 * Gain), 1.0);"));
+    CHECK(!session.reload_if_changed().has_value());
+    CHECK(red_at_centre() == 0.125f);
+    write_text(include, "float part() { return 0.75; }\n");
+    CHECK(session.files_changed());
+    CHECK(!session.reload_if_changed().has_value());
+    CHECK(red_at_centre() == 0.75f);
+}
+
+TEST_CASE("presets save and restore every value; bad presets are refused whole") {
+    const effect::Effect e = effect::load_effect(kCorpus + "/valid/everything.fx", load_options());
+    effect::ParameterValues values = effect::default_values(e);
+    values.numbers["Roughness"] = {0.125};
+    values.numbers["Tint"] = {0.1, 0.2, 0.3};
+    const std::string path = temp_path("preset.json");
+    effect::save_preset(path, e, "Main", values);
+    effect::ParameterValues restored = effect::default_values(e);
+    const effect::Preset preset = effect::load_preset(path, e, restored);
+    CHECK(preset.technique == "Main");
+    CHECK(restored.numbers == values.numbers);
+
+    const std::string bad = temp_path("bad_preset.json");
+    std::ofstream(bad) << R"({"parameters": {"Roughness": 0.9, "Tint": [1, 2]}})";
+    effect::ParameterValues untouched = effect::default_values(e);
+    CHECK_THROWS_WITH_AS(effect::load_preset(bad, e, untouched), doctest::Contains("gives 2 value(s) for vec3 Tint"), Error);
+    CHECK(untouched.numbers.at("Roughness") == std::vector<double>{0.5});  // all or nothing
+    std::ofstream(bad) << R"({"parameters": {"Wvp": 1}})";
+    CHECK_THROWS_WITH_AS(effect::load_preset(bad, e, untouched), doctest::Contains("no editable parameter"), Error);
+    std::ofstream(bad) << "{ not json";
+    CHECK_THROWS_WITH_AS(effect::load_preset(bad, e, untouched), doctest::Contains("bad_preset.json: not a valid JSON preset"), Error);
 }

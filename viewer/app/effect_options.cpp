@@ -10,6 +10,8 @@ void add_effect_options(CLI::App& command, EffectOptions& options) {
     command.add_option("--technique,-t", options.technique, "Technique to render (default: the first)");
     command.add_option("--set", options.sets, "Parameter value NAME=VALUE (0.5 | 1,0,0 | #rrggbb | true | FILE for a sampler)")
         ->allow_extra_args(false);
+    command.add_option("--preset", options.preset, "Load parameter values from a JSON preset (before --set)");
+    command.add_option("--save-preset", options.save_preset, "Save the parameter values used as a JSON preset");
 }
 
 effect::LoadOptions effect_load_options() {

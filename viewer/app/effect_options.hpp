@@ -14,6 +14,8 @@ struct EffectOptions {
     std::string path;  // empty: the built-in debug shader
     std::string technique;
     std::vector<std::string> sets;
+    std::string preset;       // JSON preset applied before --set
+    std::string save_preset;  // writes the values used
 };
 
 void add_effect_options(CLI::App& command, EffectOptions& options);

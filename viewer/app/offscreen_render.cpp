@@ -4,11 +4,10 @@
 
 #include "core/error.hpp"
 
-#include "effect/effect_program.hpp"
-#include "effect/parameter_values.hpp"
+#include "effect/preset.hpp"
 #include "gl/render_target.hpp"
 #include "render/debug_renderer.hpp"
-#include "render/effect_renderer.hpp"
+#include "render/effect_session.hpp"
 
 namespace fxview::app {
 
@@ -25,20 +24,15 @@ image::FloatImage render_offscreen(const RenderRequest& request) {
         render::DebugRenderer renderer;
         renderer.render(request.scene, request.view, target);
     } else {
-        const effect::Effect effect = effect::load_effect(request.effect.path, effect_load_options());
-        effect::ParameterValues values = effect::default_values(effect);
-        for (const auto& assignment : request.effect.sets) effect::set_value_from_text(effect, values, assignment);
-        const effect::Technique* technique =
-            request.effect.technique.empty() ? &effect.techniques.front() : effect.find_technique(request.effect.technique);
-        if (!technique) {
-            std::string names;
-            for (const auto& t : effect.techniques) names += (names.empty() ? "" : ", ") + t.name;
-            throw UsageError(request.effect.path + " has no technique '" + request.effect.technique + "' (it has " + names + ")");
-        }
-        const effect::CompiledTechnique compiled = effect::compile_technique(effect, *technique);
-        render::EffectResources resources(effect, values, texture_folders());
-        render::EffectRenderer renderer;
-        renderer.render(request.scene, compiled, values, resources, target);
+        render::EffectSession session(request.effect.path, effect_load_options(), texture_folders());
+        if (!request.effect.technique.empty()) session.select_technique(request.effect.technique);
+        if (!request.effect.preset.empty()) effect::load_preset(request.effect.preset, session.effect(), session.values());
+        for (const auto& assignment : request.effect.sets)
+            effect::set_value_from_text(session.effect(), session.values(), assignment);
+        if (!session.values().textures.empty()) session.reload_textures();
+        if (!request.effect.save_preset.empty())
+            effect::save_preset(request.effect.save_preset, session.effect(), session.technique(), session.values());
+        session.render(request.scene, target);
     }
     image::FloatImage image = target.read_color(0);
 

@@ -1,0 +1,105 @@
+#include "render/effect_session.hpp"
+
+#include "core/error.hpp"
+
+namespace fxview::render {
+
+namespace fs = std::filesystem;
+
+EffectSession::EffectSession(std::string path, effect::LoadOptions options, std::vector<std::string> texture_dirs)
+    : path_(std::move(path)), options_(std::move(options)), texture_dirs_(std::move(texture_dirs)) {
+    auto parsed = std::make_unique<effect::Effect>(effect::load_effect(path_, options_));
+    values_ = effect::default_values(*parsed);
+    loaded_ = prepare(std::move(parsed), values_);
+    technique_ = loaded_->effect->techniques.front().name;
+    watch();
+}
+
+std::unique_ptr<EffectSession::Loaded> EffectSession::prepare(std::unique_ptr<effect::Effect> parsed,
+                                                             const effect::ParameterValues& values) const {
+    auto loaded = std::make_unique<Loaded>();
+    loaded->effect = std::move(parsed);
+    for (const auto& technique : loaded->effect->techniques)
+        loaded->techniques.emplace(technique.name, effect::compile_technique(*loaded->effect, technique));
+    loaded->resources = std::make_unique<EffectResources>(*loaded->effect, values, texture_dirs_);
+    return loaded;
+}
+
+std::optional<std::string> EffectSession::reload() {
+    // Values carry over where the parameter still exists with the same type and size.
+    std::unique_ptr<Loaded> fresh;
+    effect::ParameterValues carried;
+    try {
+        auto candidate = std::make_unique<effect::Effect>(effect::load_effect(path_, options_));
+        carried = effect::default_values(*candidate);
+        for (const auto& [name, numbers] : values_.numbers) {
+            const effect::Parameter* before = loaded_->effect->find_parameter(name);
+            const effect::Parameter* after = candidate->find_parameter(name);
+            if (before && after && before->type == after->type && before->array_size == after->array_size &&
+                after->semantic.empty())
+                carried.numbers[name] = numbers;
+        }
+        for (const auto& [name, file] : values_.textures)
+            if (const auto* after = candidate->find_parameter(name); after && effect::is_sampler_type(after->type))
+                carried.textures[name] = file;
+        fresh = prepare(std::move(candidate), carried);
+    } catch (const std::exception& error) {
+        watch();  // do not retry the same broken files every frame
+        return std::string(error.what());
+    }
+    loaded_ = std::move(fresh);
+    values_ = std::move(carried);
+    renderer_.reset();
+    if (!loaded_->techniques.count(technique_)) technique_ = loaded_->effect->techniques.front().name;
+    watch();
+    return std::nullopt;
+}
+
+void EffectSession::select_technique(const std::string& name) {
+    if (!loaded_->techniques.count(name)) {
+        std::string names;
+        for (const auto& t : loaded_->effect->techniques) names += (names.empty() ? "" : ", ") + t.name;
+        throw UsageError(path_ + " has no technique '" + name + "' (it has " + names + ")");
+    }
+    technique_ = name;
+}
+
+void EffectSession::reload_textures() {
+    loaded_->resources = std::make_unique<EffectResources>(*loaded_->effect, values_, texture_dirs_);
+    renderer_.reset();
+    watch();
+}
+
+void EffectSession::render(const scene::Scene& scene, const gl::RenderTarget& target, FrameTiming timing) {
+    renderer_.render(scene, loaded_->techniques.at(technique_), values_, *loaded_->resources, target, timing);
+}
+
+void EffectSession::watch() {
+    watched_.clear();
+    std::vector<std::string> files = loaded_->effect->sources.files();
+    files.push_back(path_);
+    for (const auto& [name, texture] : loaded_->resources->textures()) {
+        size_t start = 0;
+        for (size_t i = 0; i <= texture.source.size(); ++i)
+            if (i == texture.source.size() || texture.source[i] == ';') {
+                files.push_back(texture.source.substr(start, i - start));
+                start = i + 1;
+            }
+    }
+    for (const auto& file : files) {
+        std::error_code error;
+        const auto time = fs::last_write_time(file, error);
+        if (!error) watched_[file] = time;
+    }
+}
+
+bool EffectSession::files_changed() const {
+    for (const auto& [file, time] : watched_) {
+        std::error_code error;
+        const auto now = fs::last_write_time(file, error);
+        if (error || now != time) return true;
+    }
+    return false;
+}
+
+}  // namespace fxview::render

@@ -1,0 +1,59 @@
+// One effect as a user works with it: loaded, every technique compiled, textures uploaded, the
+// user's parameter values kept. Hot reload watches the effect, its includes and its textures; a
+// reload that fails keeps the last good effect running and reports why; a reload that succeeds
+// keeps every value whose parameter still exists with the same type.
+#pragma once
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "effect/effect_program.hpp"
+#include "effect/parser.hpp"
+#include "render/effect_renderer.hpp"
+#include "render/effect_resources.hpp"
+
+namespace fxview::render {
+
+class EffectSession {
+public:
+    // Throws EffectError (or Error) when the first load fails: there is no last good effect yet.
+    EffectSession(std::string path, effect::LoadOptions options, std::vector<std::string> texture_dirs);
+
+    // Loads the file again. Returns the error text on failure (the previous effect stays).
+    std::optional<std::string> reload();
+    bool files_changed() const;
+    std::optional<std::string> reload_if_changed() { return files_changed() ? reload() : std::nullopt; }
+
+    const effect::Effect& effect() const { return *loaded_->effect; }
+    effect::ParameterValues& values() { return values_; }
+    const std::string& technique() const { return technique_; }
+    void select_technique(const std::string& name);  // UsageError naming the techniques if unknown
+    // Applies changed texture overrides (--set Sampler=file, presets): reloads the textures.
+    void reload_textures();
+
+    void render(const scene::Scene& scene, const gl::RenderTarget& target, FrameTiming timing = {});
+
+private:
+    struct Loaded {
+        std::unique_ptr<effect::Effect> effect;  // stable address: compiled passes point into it
+        std::map<std::string, effect::CompiledTechnique> techniques;
+        std::unique_ptr<EffectResources> resources;
+    };
+    // Compiles every technique and loads the textures of a parsed effect.
+    std::unique_ptr<Loaded> prepare(std::unique_ptr<effect::Effect> parsed, const effect::ParameterValues& values) const;
+    void watch();
+
+    std::string path_;
+    effect::LoadOptions options_;
+    std::vector<std::string> texture_dirs_;
+    std::unique_ptr<Loaded> loaded_;
+    effect::ParameterValues values_;
+    std::string technique_;
+    EffectRenderer renderer_;
+    std::map<std::string, std::filesystem::file_time_type> watched_;
+};
+
+}  // namespace fxview::render
