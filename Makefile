@@ -26,6 +26,9 @@ run: build
 	@for view in $(VIEWS); do \
 	  $(FXVIEW) render --mesh knot --debug-view $$view --size 512x512 --samples 4 --out out/knot-$$view.png || exit 1; \
 	done
+	$(FXVIEW) render effects/examples/textured.fx --technique CheckerLambert --mesh torus --camera-rotate 30,0,0 --size 512x512 --samples 4 --out out/torus-checker.png
+	$(FXVIEW) render effects/examples/textured.fx --technique Mirror --mesh knot --size 512x512 --samples 4 --out out/knot-mirror.png
+	$(FXVIEW) render effects/debug.fx --technique Plain --mesh knot --set PlainColor=#d4a017 --size 512x512 --samples 4 --out out/knot-plain.png
 	$(FXVIEW) render --mesh sphere --size 256x256 --out out/sphere-normals.exr
 	$(FXVIEW) pick --mesh sphere --size 256x256 --at 128,128
 

@@ -214,3 +214,24 @@ TEST_CASE("--save-preset then --preset reproduces the picture; a broken preset i
     CHECK(r.exit_code == 1);
     CHECK(r.err.find("broken.json") != std::string::npos);
 }
+
+TEST_CASE("every shipped effect passes check and renders") {
+    int effects = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(FXVIEW_SOURCE_EFFECTS_DIR)) {
+        if (entry.path().extension() != ".fx") continue;
+        ++effects;
+        const std::string path = entry.path().string();
+        CAPTURE(path);
+        const Result check = run("check " + path);
+        CHECK(check.exit_code == 0);
+        const Result list = run("list --json " + path);
+        REQUIRE(list.exit_code == 0);
+        for (const auto& technique : nlohmann::json::parse(list.out)["techniques"]) {
+            const std::string name = technique["name"];
+            CAPTURE(name);
+            const Result render = run("render " + path + " -t " + name + " --size 48x48 --out " + temp_path("shipped.png"));
+            CHECK(render.exit_code == 0);
+        }
+    }
+    CHECK(effects >= 2);
+}
