@@ -1,6 +1,8 @@
 // The fxview binary as a user calls it: JSON output parsed and checked, files written and read
 // back, exit code 2 for nonsense arguments and 1 for I/O or data failures, never a crash.
 #include <doctest/doctest.h>
+
+#include "test_support.hpp"
 #include <sys/wait.h>
 
 #include <nlohmann/json.hpp>
@@ -13,17 +15,14 @@
 
 #include "image/image_file.hpp"
 
+using fxview::test::temp_path;
+
 namespace {
 
 struct Result {
     int exit_code = -1;
     std::string out, err;
 };
-
-std::string temp_path(const std::string& name) {
-    std::filesystem::create_directories(FXVIEW_TEST_TMP);
-    return std::string(FXVIEW_TEST_TMP) + "/" + name;
-}
 
 Result run(const std::string& arguments) {
     const std::string err_file = temp_path("stderr.txt");

@@ -3,6 +3,8 @@
 // and GPU rendering through effects (debug.fx against the built-in renderer, multi-pass blending).
 #include <doctest/doctest.h>
 
+#include "test_support.hpp"
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -24,6 +26,8 @@
 #include "texture/texture_file.hpp"
 
 using namespace fxview;
+using fxview::test::shared_context;
+using fxview::test::temp_path;
 namespace fs = std::filesystem;
 
 namespace {
@@ -32,15 +36,6 @@ const std::string kEffects = FXVIEW_SOURCE_EFFECTS_DIR;
 const std::string kCorpus = FXVIEW_TEST_EFFECTS;
 
 effect::LoadOptions load_options() { return {{kEffects + "/lib"}}; }
-
-context::Context& shared_context() {
-    static const auto context = [] {
-        context::ContextOptions options;
-        options.backend = context::Backend::Egl;
-        return context::create_context(options);
-    }();
-    return *context;
-}
 
 // Parses and compiles every technique; returns the first error's text, or "" if all is well.
 std::string first_error(const std::string& path) {
@@ -283,11 +278,6 @@ void write_text(const std::string& path, const std::string& text) {
     std::ofstream(path) << text;
     // File times can be coarse: move the modification time on explicitly so the change is seen.
     fs::last_write_time(path, fs::last_write_time(path) + std::chrono::seconds(2));
-}
-
-std::string temp_path(const std::string& name) {
-    fs::create_directories(FXVIEW_TEST_TMP);
-    return std::string(FXVIEW_TEST_TMP) + "/" + name;
 }
 
 std::string constant_effect(const std::string& declarations, const std::string& body) {

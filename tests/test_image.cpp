@@ -2,6 +2,8 @@
 // image round trips through EXR and PFM (with the values that break lossy paths: NaN, inf, denormals).
 #include <doctest/doctest.h>
 
+#include "test_support.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -13,14 +15,11 @@
 #include "image/image_file.hpp"
 #include "image/pixel_info.hpp"
 
+using fxview::test::temp_path;
+
 using namespace fxview::image;
 
 namespace {
-
-std::string temp_path(const std::string& name) {
-    std::filesystem::create_directories(FXVIEW_TEST_TMP);
-    return std::string(FXVIEW_TEST_TMP) + "/" + name;
-}
 
 FloatImage awkward_image(int width, int height, int channels) {
     FloatImage image(width, height, channels);

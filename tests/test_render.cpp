@@ -3,6 +3,8 @@
 // float readback is exact, MSAA and extra colour attachments work.
 #include <doctest/doctest.h>
 
+#include "test_support.hpp"
+
 #include <cstdlib>
 #include <cstring>
 
@@ -13,24 +15,10 @@
 #include "render/debug_renderer.hpp"
 
 using namespace fxview;
+using fxview::test::shared_context;
+using fxview::test::test_backend;
 
 namespace {
-
-context::Backend test_backend() {
-    const char* name = std::getenv("FXVIEW_TEST_BACKEND");
-    return context::parse_backend(name ? name : "egl");
-}
-
-// One context for the whole process; each backend runs in its own CTest process.
-context::Context& shared_context() {
-    static const auto context = [] {
-        context::ContextOptions options;
-        options.backend = test_backend();
-        options.debug_output = true;
-        return context::create_context(options);
-    }();
-    return *context;
-}
 
 image::FloatImage render_sphere(render::DebugView view, int size, int samples = 0) {
     shared_context();

@@ -2,6 +2,8 @@
 // to GL (EGL backend) and read back. Also FTXT rejection, cube crosses, DDS variants and errors.
 #include <doctest/doctest.h>
 
+#include "test_support.hpp"
+
 #include <stb/stb_image_write.h>
 
 #include <cstring>
@@ -17,23 +19,11 @@
 #include "texture/texture_file.hpp"
 
 using namespace fxview;
+using fxview::test::shared_context;
+using fxview::test::temp_path;
 using namespace fxview::texture;
 
 namespace {
-
-std::string temp_path(const std::string& name) {
-    std::filesystem::create_directories(FXVIEW_TEST_TMP);
-    return std::string(FXVIEW_TEST_TMP) + "/" + name;
-}
-
-context::Context& shared_context() {
-    static const auto context = [] {
-        context::ContextOptions options;
-        options.backend = context::Backend::Egl;
-        return context::create_context(options);
-    }();
-    return *context;
-}
 
 // 3x2 RGBA8 test pattern, top row first: every texel different in every channel.
 const std::uint8_t kPattern[2][3][4] = {{{255, 0, 0, 255}, {0, 255, 0, 128}, {0, 0, 255, 0}},

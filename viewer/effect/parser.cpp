@@ -1,3 +1,4 @@
+#include "core/text.hpp"
 #include "effect/parser.hpp"
 
 #include <algorithm>
@@ -45,11 +46,6 @@ const Technique* Effect::find_technique(const std::string& name) const {
 }
 
 namespace {
-
-std::string lower(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
 
 class Parser {
 public:
@@ -188,7 +184,7 @@ private:
             annotation.name = expect_identifier("an annotation name after '" + type.text + "'").text;
             expect('=', "after annotation " + annotation.name);
             annotation.value = parse_value();
-            const std::string t = lower(annotation.type);
+            const std::string t = to_lower(annotation.type);
             if ((t == "string") != annotation.value.is_string)
                 throw EffectError(annotation.where, "annotation " + annotation.name + " is declared " + annotation.type +
                                                         " but its value is " + (annotation.value.is_string ? "a string" : "not a string"));
@@ -240,7 +236,7 @@ private:
     void parse_sampler(Parameter& parameter, const Token& name) {
         apply_sampler_annotations(parameter.sampler, parameter.annotations);
         for (const auto& a : parameter.annotations)
-            if (lower(a.name) == "texture") {
+            if (to_lower(a.name) == "texture") {
                 if (!a.value.is_string) throw EffectError(a.where, "annotation Texture needs a texture name string");
                 parameter.texture = a.value.text;
             }
@@ -265,7 +261,7 @@ private:
             if (state.kind == TokenKind::End) fail(open, "unterminated sampler_state: '{' is never closed");
             if (state.kind != TokenKind::Identifier) fail(state, "expected a sampler state name, found '" + state.text + "'");
             expect('=', "after " + state.text);
-            if (lower(state.text) == "texture") {
+            if (to_lower(state.text) == "texture") {
                 const bool angled = accept('<');
                 parameter.texture = expect_identifier("a texture name").text;
                 texture_uses_.push_back({state, parameter.texture});
@@ -295,7 +291,7 @@ private:
         texture.where = at(name);
         if (accept(':')) {
             const Token semantic = expect_identifier("a texture semantic after ':'");
-            if (lower(semantic.text) != "rendercolortarget")
+            if (to_lower(semantic.text) != "rendercolortarget")
                 fail(semantic, "unknown texture semantic '" + semantic.text + "' (expected RENDERCOLORTARGET)");
             texture.render_target = true;
             texture.storage = TextureStorage::Float32;
@@ -367,7 +363,7 @@ private:
             if (state.kind == TokenKind::End) fail(open, "unterminated pass " + pass.name + ": '{' is never closed");
             if (state.kind != TokenKind::Identifier) fail(state, "expected a state name in pass " + pass.name + ", found '" + state.text + "'");
             expect('=', "after " + state.text);
-            const std::string key = lower(state.text);
+            const std::string key = to_lower(state.text);
             static const std::map<std::string, ShaderStage> stages = {
                 {"vertexshader", ShaderStage::Vertex},     {"vertexprogram", ShaderStage::Vertex},
                 {"fragmentshader", ShaderStage::Fragment}, {"fragmentprogram", ShaderStage::Fragment},

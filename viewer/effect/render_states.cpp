@@ -1,3 +1,4 @@
+#include "core/text.hpp"
 #include "effect/render_states.hpp"
 
 #include <algorithm>
@@ -6,11 +7,6 @@
 
 namespace fxview::effect {
 namespace {
-
-std::string lower(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
 
 std::string describe(const StateValue& value) {
     std::string text;
@@ -22,7 +18,7 @@ std::string describe(const StateValue& value) {
 bool to_bool(const std::string& state, const StateValue& value, const SourceLocation& where) {
     if (value.is_number.size() == 1) {
         if (value.is_number[0]) return value.numbers[0] != 0.0;
-        const std::string word = lower(value.words[0]);
+        const std::string word = to_lower(value.words[0]);
         if (word == "true") return true;
         if (word == "false") return false;
     }
@@ -31,7 +27,7 @@ bool to_bool(const std::string& state, const StateValue& value, const SourceLoca
 
 GLenum to_enum(const std::string& state, const std::string& word, const std::map<std::string, GLenum>& choices,
                const SourceLocation& where) {
-    const auto found = choices.find(lower(word));
+    const auto found = choices.find(to_lower(word));
     if (found != choices.end()) return found->second;
     std::string names;
     for (const auto& [name, _] : choices) names += (names.empty() ? "" : ", ") + name;
@@ -87,7 +83,7 @@ const std::vector<std::string>& render_state_names() {
 }
 
 void set_render_state(RenderStates& s, const std::string& name, const StateValue& value, const SourceLocation& where) {
-    const std::string key = lower(name);
+    const std::string key = to_lower(name);
     if (key == "depthtestenable") {
         s.depth_test = to_bool(name, value, where);
     } else if (key == "depthmask" || key == "depthwriteenable" || key == "zwriteenable") {
@@ -99,7 +95,7 @@ void set_render_state(RenderStates& s, const std::string& name, const StateValue
     } else if (key == "cullface") {
         s.cull_face = single_enum(name, value, kFaces, where);
     } else if (key == "cullmode") {  // DirectX spelling: None disables culling
-        if (value.words.size() == 1 && lower(value.words[0]) == "none") {
+        if (value.words.size() == 1 && to_lower(value.words[0]) == "none") {
             s.cull = false;
         } else {
             s.cull = true;
@@ -146,7 +142,7 @@ void set_render_state(RenderStates& s, const std::string& name, const StateValue
         if (s.render_targets.size() <= index) s.render_targets.resize(index + 1);
         s.render_targets[index] = value.words[0];
     } else if (key == "draw") {
-        const std::string what = value.words.size() == 1 ? lower(value.words[0]) : "";
+        const std::string what = value.words.size() == 1 ? to_lower(value.words[0]) : "";
         if (what != "geometry" && what != "buffer")
             throw EffectError(where, "render state Draw needs Geometry or Buffer, got '" + describe(value) + "'");
         s.draw_buffer = what == "buffer";

@@ -1,3 +1,4 @@
+#include "core/text.hpp"
 #include "effect/texture_annotations.hpp"
 
 #include <algorithm>
@@ -7,11 +8,6 @@
 namespace fxview::effect {
 namespace {
 
-std::string lower(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
-
 std::string text_of(const Annotation& a) {
     if (!a.value.is_string) throw EffectError(a.where, "annotation " + a.name + " needs a string");
     return a.value.text;
@@ -19,7 +15,7 @@ std::string text_of(const Annotation& a) {
 
 GLenum lookup(const std::map<std::string, GLenum>& table, const std::string& what, const std::string& value,
               const SourceLocation& where) {
-    const auto found = table.find(lower(value));
+    const auto found = table.find(to_lower(value));
     if (found != table.end()) return found->second;
     std::string names;
     for (const auto& [name, _] : table) names += (names.empty() ? "" : ", ") + name;
@@ -50,7 +46,7 @@ void set_filter(SamplerState& s, const std::string& value, const SourceLocation&
 bool apply_texture_annotations(TextureResource& t, const std::vector<Annotation>& annotations) {
     bool any = false;
     for (const auto& a : annotations) {
-        const std::string key = lower(a.name);
+        const std::string key = to_lower(a.name);
         if (key == "resourcename") {
             std::string names = text_of(a);
             t.files.clear();
@@ -66,7 +62,7 @@ bool apply_texture_annotations(TextureResource& t, const std::vector<Annotation>
             if (t.files.empty()) throw EffectError(a.where, "ResourceName is empty");
             any = true;
         } else if (key == "resourcetype") {
-            const std::string type = lower(text_of(a));
+            const std::string type = to_lower(text_of(a));
             if (type == "1d") t.type = texture::TextureType::Tex1D;
             else if (type == "2d") t.type = texture::TextureType::Tex2D;
             else if (type == "cube") t.type = texture::TextureType::Cube;
@@ -74,14 +70,14 @@ bool apply_texture_annotations(TextureResource& t, const std::vector<Annotation>
             else throw EffectError(a.where, "unknown ResourceType '" + text_of(a) + "' (expected 1D, 2D or CUBE)");
             any = true;
         } else if (key == "format") {
-            const std::string format = lower(text_of(a));
+            const std::string format = to_lower(text_of(a));
             if (format == "8" || format == "rgba8" || format == "a8r8g8b8" || format == "x8r8g8b8") t.storage = TextureStorage::Unorm8;
             else if (format == "16f" || format == "rgba16f" || format == "a16b16g16r16f") t.storage = TextureStorage::Float16;
             else if (format == "32f" || format == "rgba32f" || format == "a32b32g32r32f") t.storage = TextureStorage::Float32;
             else throw EffectError(a.where, "unknown texture Format '" + text_of(a) + "' (expected 8, 16F or 32F)");
             any = true;
         } else if (key == "colorspace") {
-            const std::string space = lower(text_of(a));
+            const std::string space = to_lower(text_of(a));
             if (space != "srgb" && space != "linear")
                 throw EffectError(a.where, "unknown ColorSpace '" + text_of(a) + "' (expected sRGB or linear)");
             t.srgb = space == "srgb";
@@ -105,7 +101,7 @@ bool apply_texture_annotations(TextureResource& t, const std::vector<Annotation>
 
 void apply_sampler_annotations(SamplerState& s, const std::vector<Annotation>& annotations) {
     for (const auto& a : annotations) {
-        const std::string key = lower(a.name);
+        const std::string key = to_lower(a.name);
         if (key == "filter") set_filter(s, text_of(a), a.where);
         else if (key == "wrap") s.wrap_s = s.wrap_t = s.wrap_r = lookup(kWraps, "wrap mode", text_of(a), a.where);
         else if (key == "minfilter" || key == "magfilter" || key == "wraps" || key == "wrapt" || key == "wrapr")
@@ -114,7 +110,7 @@ void apply_sampler_annotations(SamplerState& s, const std::vector<Annotation>& a
 }
 
 void set_sampler_state(SamplerState& s, const std::string& name, const std::string& value, const SourceLocation& where) {
-    const std::string key = lower(name);
+    const std::string key = to_lower(name);
     if (key == "minfilter") s.min_filter = lookup(kMinFilters, "MinFilter", value, where);
     else if (key == "magfilter") s.mag_filter = lookup(kMagFilters, "MagFilter", value, where);
     else if (key == "filter") set_filter(s, value, where);

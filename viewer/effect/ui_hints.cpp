@@ -4,17 +4,13 @@
 #include <cctype>
 #include <map>
 
+#include "core/text.hpp"
 #include "effect/parser.hpp"
 
 namespace fxview::effect {
 namespace {
 
 enum class Hint { Label, Widget, Min, Max, Step, Group, Order, Unit, Help, Items };
-
-std::string lower(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
 
 const std::map<std::string, Hint>& hint_names() {
     static const std::map<std::string, Hint> names = {
@@ -53,7 +49,7 @@ std::vector<std::string> split_items(const std::string& text) {
 UiHints ui_hints_from(const std::vector<Annotation>& annotations) {
     UiHints ui;
     for (const auto& annotation : annotations) {
-        const auto found = hint_names().find(lower(annotation.name));
+        const auto found = hint_names().find(to_lower(annotation.name));
         if (found == hint_names().end()) continue;  // other annotations are kept but carry no UI meaning
         const Value& v = annotation.value;
         const auto number = [&]() -> std::optional<double> {
@@ -67,7 +63,7 @@ UiHints ui_hints_from(const std::vector<Annotation>& annotations) {
         };
         switch (found->second) {
             case Hint::Label: ui.label = text(); break;
-            case Hint::Widget: ui.widget = lower(text()); break;
+            case Hint::Widget: ui.widget = to_lower(text()); break;
             case Hint::Min: ui.min = number(); break;
             case Hint::Max: ui.max = number(); break;
             case Hint::Step: ui.step = number(); break;

@@ -1,3 +1,4 @@
+#include "core/text.hpp"
 #include "image/image_file.hpp"
 
 #include <algorithm>
@@ -7,17 +8,6 @@
 #include "core/error.hpp"
 
 namespace fxview::image {
-namespace {
-
-std::string lower_extension(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return extension;
-}
-
-}  // namespace
-
 void write_image(const std::string& path, const FloatImage& image, Encoding png_encoding) {
     const std::string extension = lower_extension(path);
     if (extension == ".png") return write_png(path, image, png_encoding);

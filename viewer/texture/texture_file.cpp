@@ -1,3 +1,4 @@
+#include "core/text.hpp"
 #include "texture/texture_file.hpp"
 
 #include <stb/stb_image.h>
@@ -14,13 +15,6 @@
 
 namespace fxview::texture {
 namespace {
-
-std::string lower_extension(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return extension;
-}
 
 TextureData single_level(const std::string& path, PixelFormat format, int width, int height, const void* data) {
     TextureData texture;
