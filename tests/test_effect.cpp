@@ -352,3 +352,16 @@ TEST_CASE("presets save and restore every value; bad presets are refused whole")
     std::ofstream(bad) << "{ not json";
     CHECK_THROWS_WITH_AS(effect::load_preset(bad, e, untouched), doctest::Contains("bad_preset.json: not a valid JSON preset"), Error);
 }
+
+TEST_CASE("a sampler3D reads the slices of a stacked image") {
+    shared_context();
+    const effect::Effect e = effect::load_effect(kCorpus + "/valid/volume.fx", load_options());
+    const auto compiled = effect::compile_technique(e, e.techniques.front());
+    render::EffectResources resources(e, effect::default_values(e), {});
+    gl::RenderTarget target({1, 2, 1, 0});
+    render::EffectRenderer renderer;
+    renderer.render(scene::Scene{}, compiled, effect::default_values(e), resources, target);
+    const auto image = target.read_color();
+    CHECK(image.pixel(0, 0)[0] == 3.0f);  // slice 1, top row
+    CHECK(image.pixel(0, 1)[0] == 4.0f);  // slice 1, bottom row
+}

@@ -198,6 +198,49 @@ TEST_CASE("1D textures come from images one pixel high") {
     CHECK_THROWS_WITH_AS(as_1d(row), doctest::Contains("one pixel high"), Error);
 }
 
+TEST_CASE("3D textures: slices stacked in an image, and DDS volumes; both survive the GL round trip") {
+    const std::string stacked = temp_path("stacked.ftxt");  // 2 wide, 2 slices of 2 rows: value = 10*slice + 2*row + col
+    std::ofstream(stacked) << "2 4\n0;0;0;1\n1;0;0;1\n2;0;0;1\n3;0;0;1\n10;0;0;1\n11;0;0;1\n12;0;0;1\n13;0;0;1\n";
+    const TextureData volume = as_3d(load_texture_file(stacked), 2);
+    CHECK(volume.type == TextureType::Tex3D);
+    CHECK(volume.height() == 2);
+    CHECK(volume.depth() == 2);
+    float rgba[4];
+    read_texel(volume, 0, 0, 1, 0, rgba, 1);
+    CHECK(rgba[0] == 11.0f);
+    CHECK_THROWS_WITH_AS(as_3d(load_texture_file(stacked), 3), doctest::Contains("does not split into 3 equal slices"), Error);
+
+    DdsHeader header(2, 1, 1);
+    header.words[6] = 3;  // depth
+    header.words[20] = 0x41;
+    header.words[22] = 32;
+    header.words[23] = 0xFF, header.words[24] = 0xFF00, header.words[25] = 0xFF0000, header.words[26] = 0xFF000000;
+    header.words[28] = 0x200000;  // DDSCAPS2_VOLUME
+    auto bytes = bytes_of(header);
+    for (std::uint8_t texel = 0; texel < 6; ++texel)
+        for (std::uint8_t v : {std::uint8_t(texel * 40), std::uint8_t(0), std::uint8_t(0), std::uint8_t(255)}) bytes.push_back(v);
+    const std::string path = temp_path("volume.dds");
+    write_file(path, bytes);
+    const TextureData dds = load_texture_file(path);
+    CHECK(dds.type == TextureType::Tex3D);
+    CHECK(dds.depth() == 3);
+    read_texel(dds, 0, 0, 1, 0, rgba, 2);
+    CHECK(rgba[0] * 255.0f == doctest::Approx(200.0f));
+
+    shared_context();
+    for (const TextureData* data : {&volume, &dds}) {
+        const gl::Texture texture = gl::upload_texture(*data, {false, false});
+        const auto texels = gl::download_texture(texture.get(), TextureType::Tex3D, 0, 0, data->width(), data->height(), data->depth());
+        for (int z = 0; z < data->depth(); ++z)
+            for (int y = 0; y < data->height(); ++y)
+                for (int x = 0; x < data->width(); ++x) {
+                    read_texel(*data, 0, 0, x, y, rgba, z);
+                    const float got = texels[((static_cast<size_t>(z) * data->height() + y) * data->width() + x) * 4];
+                    CHECK(std::abs(got - rgba[0]) <= 1e-6f);  // float exact; unorm8 within an ulp (see below)
+                }
+    }
+}
+
 TEST_CASE("DDS: RGBA8 (BGRA order) with mips, RGBA16F, RGBA32F via DX10, BC1, cube; broken files rejected") {
     // BGRA8, 2x2 with a 1x1 mip.
     DdsHeader header(2, 2, 2);

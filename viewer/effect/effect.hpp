@@ -60,6 +60,7 @@ struct TextureResource {
     texture::TextureType type = texture::TextureType::Tex2D;
     TextureStorage storage = TextureStorage::Native;
     bool srgb = false;
+    int depth = 0;  // 3D from an image: the number of slices stacked top to bottom (0: not given)
     bool render_target = false;
     glm::vec2 viewport_ratio{1.0f};   // render targets: size relative to the frame
     std::optional<glm::ivec2> dimensions;  // render targets: fixed size instead

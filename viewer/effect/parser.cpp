@@ -65,7 +65,7 @@ public:
                 parse_shader_block();
             } else if (token.kind == TokenKind::Identifier &&
                        (token.text == "texture" || token.text == "texture1D" || token.text == "texture2D" ||
-                        token.text == "textureCUBE")) {
+                        token.text == "texture3D" || token.text == "textureCUBE")) {
                 parse_texture();
             } else if (token.kind == TokenKind::Identifier && token.text == "technique") {
                 parse_technique();
@@ -243,7 +243,8 @@ private:
         TextureResource implicit;
         implicit.name = parameter.name;
         implicit.where = parameter.where;
-        implicit.type = parameter.type == "sampler1D" ? texture::TextureType::Tex1D
+        implicit.type = parameter.type == "sampler1D"   ? texture::TextureType::Tex1D
+                      : parameter.type == "sampler3D"   ? texture::TextureType::Tex3D
                       : parameter.type == "samplerCube" ? texture::TextureType::Cube
                                                         : texture::TextureType::Tex2D;
         if (apply_texture_annotations(implicit, parameter.annotations)) {
@@ -286,6 +287,7 @@ private:
         TextureResource texture;
         if (keyword.text == "texture1D") texture.type = texture::TextureType::Tex1D;
         if (keyword.text == "textureCUBE") texture.type = texture::TextureType::Cube;
+        if (keyword.text == "texture3D") texture.type = texture::TextureType::Tex3D;
         const Token name = expect_identifier("a texture name");
         texture.name = name.text;
         texture.where = at(name);

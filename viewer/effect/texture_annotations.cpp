@@ -66,8 +66,8 @@ bool apply_texture_annotations(TextureResource& t, const std::vector<Annotation>
             if (type == "1d") t.type = texture::TextureType::Tex1D;
             else if (type == "2d") t.type = texture::TextureType::Tex2D;
             else if (type == "cube") t.type = texture::TextureType::Cube;
-            else if (type == "3d") throw EffectError(a.where, "ResourceType 3D is not supported yet");
-            else throw EffectError(a.where, "unknown ResourceType '" + text_of(a) + "' (expected 1D, 2D or CUBE)");
+            else if (type == "3d") t.type = texture::TextureType::Tex3D;
+            else throw EffectError(a.where, "unknown ResourceType '" + text_of(a) + "' (expected 1D, 2D, 3D or CUBE)");
             any = true;
         } else if (key == "format") {
             const std::string format = to_lower(text_of(a));
@@ -87,6 +87,12 @@ bool apply_texture_annotations(TextureResource& t, const std::vector<Annotation>
             if (a.value.is_string || (n.size() != 1 && n.size() != 2) || n[0] <= 0 || n.back() <= 0)
                 throw EffectError(a.where, "ViewportRatio needs one or two positive numbers");
             t.viewport_ratio = {static_cast<float>(n[0]), static_cast<float>(n.back())};
+            any = true;
+        } else if (key == "depth") {
+            const auto& n = a.value.numbers;
+            if (a.value.is_string || n.size() != 1 || n[0] < 1 || n[0] > 2048)
+                throw EffectError(a.where, "Depth needs a slice count in 1..2048");
+            t.depth = static_cast<int>(n[0]);
             any = true;
         } else if (key == "dimensions") {
             const auto& n = a.value.numbers;

@@ -1,5 +1,5 @@
 // Texture and sampler settings from annotations and CgFX sampler_state blocks:
-//   ResourceName, ResourceType (1D, 2D, CUBE), Format (8, 16F, 32F and the CgFX names),
+//   ResourceName, ResourceType (1D, 2D, 3D, CUBE), Depth (slices of a 3D image), Format (8, 16F, 32F and the CgFX names),
 //   ColorSpace (sRGB, linear), ViewportRatio, Dimensions; Filter (nearest, linear, mipmap),
 //   Wrap (repeat, clamp, mirror), MinFilter/MagFilter and WrapS/WrapT/WrapR (AddressU/V/W).
 #pragma once

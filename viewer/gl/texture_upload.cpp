@@ -14,6 +14,7 @@ GLenum texture_target(TextureType type) {
     switch (type) {
         case TextureType::Tex1D: return GL_TEXTURE_1D;
         case TextureType::Tex2D: return GL_TEXTURE_2D;
+        case TextureType::Tex3D: return GL_TEXTURE_3D;
         case TextureType::Cube: return GL_TEXTURE_CUBE_MAP;
     }
     return GL_TEXTURE_2D;
@@ -48,13 +49,14 @@ Texture upload_texture(const texture::TextureData& source, const TextureUpload& 
     if (data.type != TextureType::Cube) texture::flip_vertically(data);
 
     const GLenum target = texture_target(data.type);
-    const int width = data.width(), height = data.height();
+    const int width = data.width(), height = data.height(), depth = data.depth();
     const bool generate = options.generate_mipmaps && data.levels() == 1 && !compressed;
-    const int levels = generate ? std::bit_width(static_cast<unsigned>(std::max(width, height))) : data.levels();
+    const int levels = generate ? std::bit_width(static_cast<unsigned>(std::max({width, height, depth}))) : data.levels();
     Texture texture = create_texture(target);
     const GLuint name = texture.get();
     const GLenum format = internal_format(data.format, options.srgb);
     if (target == GL_TEXTURE_1D) glTextureStorage1D(name, levels, format, width);
+    else if (target == GL_TEXTURE_3D) glTextureStorage3D(name, levels, format, width, height, depth);
     else glTextureStorage2D(name, levels, format, width, height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     for (size_t face = 0; face < data.faces.size(); ++face)
@@ -65,11 +67,15 @@ Texture upload_texture(const texture::TextureData& source, const TextureUpload& 
                 const auto size = static_cast<GLsizei>(l.bytes.size());
                 if (target == GL_TEXTURE_CUBE_MAP)
                     glCompressedTextureSubImage3D(name, m, 0, 0, static_cast<GLint>(face), l.width, l.height, 1, format, size, l.bytes.data());
+                else if (target == GL_TEXTURE_3D)
+                    glCompressedTextureSubImage3D(name, m, 0, 0, 0, l.width, l.height, l.depth, format, size, l.bytes.data());
                 else
                     glCompressedTextureSubImage2D(name, m, 0, 0, l.width, l.height, format, size, l.bytes.data());
             } else if (target == GL_TEXTURE_CUBE_MAP) {
                 glTextureSubImage3D(name, m, 0, 0, static_cast<GLint>(face), l.width, l.height, 1, GL_RGBA,
                                     pixel_type(data.format), l.bytes.data());
+            } else if (target == GL_TEXTURE_3D) {
+                glTextureSubImage3D(name, m, 0, 0, 0, l.width, l.height, l.depth, GL_RGBA, pixel_type(data.format), l.bytes.data());
             } else if (target == GL_TEXTURE_1D) {
                 glTextureSubImage1D(name, m, 0, l.width, GL_RGBA, pixel_type(data.format), l.bytes.data());
             } else {
@@ -81,8 +87,8 @@ Texture upload_texture(const texture::TextureData& source, const TextureUpload& 
     return texture;
 }
 
-std::vector<float> download_texture(GLuint texture, TextureType type, int face, int level, int width, int height) {
-    std::vector<float> bottom_up(static_cast<size_t>(width) * height * 4);
+std::vector<float> download_texture(GLuint texture, TextureType type, int face, int level, int width, int height, int depth) {
+    std::vector<float> bottom_up(static_cast<size_t>(width) * height * depth * 4);
     const auto size = static_cast<GLsizei>(bottom_up.size() * sizeof(float));
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     if (type == TextureType::Cube)
@@ -92,9 +98,10 @@ std::vector<float> download_texture(GLuint texture, TextureType type, int face, 
     if (type == TextureType::Cube) return bottom_up;  // cube faces are stored top row first
     std::vector<float> top_down(bottom_up.size());
     const size_t row = static_cast<size_t>(width) * 4;
-    for (int y = 0; y < height; ++y)
-        std::copy_n(bottom_up.begin() + static_cast<ptrdiff_t>((height - 1 - y) * row), row,
-                    top_down.begin() + static_cast<ptrdiff_t>(y * row));
+    for (int slice = 0; slice < depth; ++slice)  // each slice flipped on its own
+        for (int y = 0; y < height; ++y)
+            std::copy_n(bottom_up.begin() + static_cast<ptrdiff_t>((slice * height + height - 1 - y) * row), row,
+                        top_down.begin() + static_cast<ptrdiff_t>((slice * height + y) * row));
     return top_down;
 }
 

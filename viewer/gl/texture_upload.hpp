@@ -16,7 +16,8 @@ struct TextureUpload {
 GLenum texture_target(texture::TextureType type);
 Texture upload_texture(const texture::TextureData& data, const TextureUpload& options);
 
-// Reads back one level of one face as RGBA float, top row first (tests, texture viewer).
-std::vector<float> download_texture(GLuint texture, texture::TextureType type, int face, int level, int width, int height);
+// Reads back one level of one face (all slices of a 3D level) as RGBA float, top row first.
+std::vector<float> download_texture(GLuint texture, texture::TextureType type, int face, int level, int width, int height,
+                                    int depth = 1);
 
 }  // namespace fxview::gl

@@ -52,8 +52,14 @@ TextureData load_resource(const effect::TextureResource& resource, const std::ve
     switch (resource.type) {
         case TextureType::Cube: return data.type == TextureType::Cube ? data : texture::split_cube_cross(data);
         case TextureType::Tex1D: return texture::as_1d(data);
+        case TextureType::Tex3D:
+            if (data.type == TextureType::Tex3D) return data;  // a DDS volume
+            if (resource.depth == 0)
+                throw Error(paths[0] + ": a 3D texture from an image needs a Depth annotation (slices stacked top to bottom)");
+            return texture::as_3d(data, resource.depth);
         case TextureType::Tex2D:
-            if (data.type == TextureType::Cube) throw Error(paths[0] + ": holds a cube map, but " + resource.name + " is 2D");
+            if (data.type != TextureType::Tex2D)
+                throw Error(paths[0] + ": holds a cube or volume texture, but " + resource.name + " is 2D");
             return data;
     }
     return data;

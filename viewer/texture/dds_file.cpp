@@ -19,6 +19,7 @@ constexpr std::uint32_t kFourCC = 0x4;           // DDPF_FOURCC
 constexpr std::uint32_t kRgb = 0x40;             // DDPF_RGB
 constexpr std::uint32_t kCubeMap = 0x200;        // DDSCAPS2_CUBEMAP
 constexpr std::uint32_t kAllFaces = 0xFC00;      // DDSCAPS2_CUBEMAP_POSITIVEX ... NEGATIVEZ
+constexpr std::uint32_t kVolume = 0x200000;      // DDSCAPS2_VOLUME
 
 std::uint32_t fourcc(const char (&code)[5]) {
     return static_cast<std::uint32_t>(code[0]) | static_cast<std::uint32_t>(code[1]) << 8 |
@@ -45,6 +46,8 @@ TextureData load_dds(const std::string& path) {
     const std::uint32_t pf_flags = word(bytes, 80), pf_fourcc = word(bytes, 84), bit_count = word(bytes, 88);
     const std::uint32_t red_mask = word(bytes, 92);
     const std::uint32_t caps2 = word(bytes, 112);
+    const int depth = (caps2 & kVolume) ? static_cast<int>(std::max<std::uint32_t>(1, word(bytes, 24))) : 1;
+    if (depth > 2048) throw Error(path + ": implausible DDS depth " + std::to_string(depth));
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
         throw Error(path + ": implausible DDS size " + std::to_string(width) + "x" + std::to_string(height));
     if (mip_count > 15) throw Error(path + ": implausible DDS mip count " + std::to_string(mip_count));
@@ -89,23 +92,26 @@ TextureData load_dds(const std::string& path) {
         throw Error(path + ": unsupported DDS pixel format (flags 0x" + std::to_string(pf_flags) + ", " +
                     std::to_string(bit_count) + " bits)");
     }
-    texture.type = faces == 6 ? TextureType::Cube : TextureType::Tex2D;
+    texture.type = faces == 6 ? TextureType::Cube : (caps2 & kVolume) ? TextureType::Tex3D : TextureType::Tex2D;
     if (faces == 6 && width != height) throw Error(path + ": DDS cube faces must be square");
     for (int face = 0; face < faces; ++face) {
         std::vector<Level> levels;
-        int w = width, h = height;
+        int w = width, h = height, d = depth;
         for (std::uint32_t m = 0; m < mip_count; ++m) {
-            const size_t size = level_size(texture.format, w, h);
+            const size_t size = level_size(texture.format, w, h, d);
             if (offset + size > bytes.size())
                 throw Error(path + ": DDS data ends early (face " + std::to_string(face) + ", level " + std::to_string(m) + ")");
-            Level level{w, h, std::vector<std::uint8_t>(bytes.begin() + static_cast<ptrdiff_t>(offset),
-                                                        bytes.begin() + static_cast<ptrdiff_t>(offset + size))};
+            Level level{w, h,
+                        std::vector<std::uint8_t>(bytes.begin() + static_cast<ptrdiff_t>(offset),
+                                                  bytes.begin() + static_cast<ptrdiff_t>(offset + size)),
+                        d};
             if (swap_red_blue)
                 for (size_t i = 0; i < level.bytes.size(); i += 4) std::swap(level.bytes[i], level.bytes[i + 2]);
             levels.push_back(std::move(level));
             offset += size;
             w = std::max(1, w / 2);
             h = std::max(1, h / 2);
+            d = std::max(1, d / 2);
         }
         texture.faces.push_back(std::move(levels));
     }

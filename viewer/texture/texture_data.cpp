@@ -23,10 +23,10 @@ int bytes_per_pixel(PixelFormat f) {
 
 int bytes_per_block(PixelFormat f) { return f == PixelFormat::BC1 ? 8 : is_compressed(f) ? 16 : 0; }
 
-size_t level_size(PixelFormat f, int width, int height) {
+size_t level_size(PixelFormat f, int width, int height, int depth) {
     if (is_compressed(f))
-        return static_cast<size_t>(std::max(1, (width + 3) / 4)) * std::max(1, (height + 3) / 4) * bytes_per_block(f);
-    return static_cast<size_t>(width) * height * bytes_per_pixel(f);
+        return static_cast<size_t>(std::max(1, (width + 3) / 4)) * std::max(1, (height + 3) / 4) * bytes_per_block(f) * depth;
+    return static_cast<size_t>(width) * height * depth * bytes_per_pixel(f);
 }
 
 const char* format_name(PixelFormat f) {
@@ -41,9 +41,9 @@ const char* format_name(PixelFormat f) {
     return "?";
 }
 
-void read_texel(const TextureData& t, int face, int level, int x, int y, float rgba[4]) {
+void read_texel(const TextureData& t, int face, int level, int x, int y, float rgba[4], int z) {
     const Level& l = t.faces.at(face).at(level);
-    const size_t index = static_cast<size_t>(y) * l.width + x;
+    const size_t index = (static_cast<size_t>(z) * l.height + y) * l.width + x;
     switch (t.format) {
         case PixelFormat::RGBA8:
             for (int c = 0; c < 4; ++c) rgba[c] = l.bytes[index * 4 + c] / 255.0f;
@@ -73,8 +73,8 @@ TextureData convert(const TextureData& t, PixelFormat target) {
         for (size_t m = 0; m < t.faces[f].size(); ++m) {
             const Level& in = t.faces[f][m];
             Level& level = out.faces[f][m];
-            level.bytes.assign(level_size(target, in.width, in.height), 0);
-            for (int y = 0; y < in.height; ++y)
+            level.bytes.assign(level_size(target, in.width, in.height, in.depth), 0);
+            for (int y = 0; y < in.height * in.depth; ++y)  // slices are consecutive rows
                 for (int x = 0; x < in.width; ++x) {
                     float rgba[4];
                     read_texel(t, static_cast<int>(f), static_cast<int>(m), x, y, rgba);
@@ -134,8 +134,10 @@ void flip_vertically(TextureData& t) {
                 const int columns = std::max(1, (level.width + 3) / 4), rows = std::max(1, (level.height + 3) / 4);
                 const size_t row_bytes = static_cast<size_t>(columns) * block;
                 std::vector<std::uint8_t> flipped(level.bytes.size());
-                for (int r = 0; r < rows; ++r)
-                    std::memcpy(&flipped[(rows - 1 - r) * row_bytes], &level.bytes[r * row_bytes], row_bytes);
+                for (int slice = 0; slice < level.depth; ++slice)
+                    for (int r = 0; r < rows; ++r)
+                        std::memcpy(&flipped[(static_cast<size_t>(slice) * rows + rows - 1 - r) * row_bytes],
+                                    &level.bytes[(static_cast<size_t>(slice) * rows + r) * row_bytes], row_bytes);
                 // Only whole blocks can be flipped without re-encoding: heights of 1-3 or multiples of 4.
                 if (level.height > 4 && level.height % 4 != 0)
                     throw Error(t.source + ": cannot flip a " + format_name(t.format) + " level of height " +
@@ -146,10 +148,12 @@ void flip_vertically(TextureData& t) {
                 level.bytes = std::move(flipped);
             } else {
                 const size_t row_bytes = static_cast<size_t>(level.width) * bytes_per_pixel(t.format);
-                for (int y = 0; y < level.height / 2; ++y)
-                    std::swap_ranges(level.bytes.begin() + static_cast<ptrdiff_t>(y * row_bytes),
-                                     level.bytes.begin() + static_cast<ptrdiff_t>((y + 1) * row_bytes),
-                                     level.bytes.begin() + static_cast<ptrdiff_t>((level.height - 1 - y) * row_bytes));
+                for (int slice = 0; slice < level.depth; ++slice) {
+                    const auto first = level.bytes.begin() + static_cast<ptrdiff_t>(slice * level.height * row_bytes);
+                    for (int y = 0; y < level.height / 2; ++y)
+                        std::swap_ranges(first + static_cast<ptrdiff_t>(y * row_bytes), first + static_cast<ptrdiff_t>((y + 1) * row_bytes),
+                                         first + static_cast<ptrdiff_t>((level.height - 1 - y) * row_bytes));
+                }
             }
         }
 }

@@ -77,6 +77,21 @@ TextureData as_1d(const TextureData& image) {
     return texture;
 }
 
+TextureData as_3d(const TextureData& image, int depth) {
+    if (image.type != TextureType::Tex2D || image.faces.size() != 1 || image.levels() != 1)
+        throw Error(image.source + ": a 3D texture is made from one plain 2D image of stacked slices");
+    if (depth < 1 || image.height() % depth != 0)
+        throw Error(image.source + ": height " + std::to_string(image.height()) + " does not split into " +
+                    std::to_string(depth) + " equal slices");
+    if (is_compressed(image.format) && (image.height() / depth) % 4 != 0)
+        throw Error(image.source + ": compressed slices must be a multiple of 4 rows high");
+    TextureData volume = image;
+    volume.type = TextureType::Tex3D;
+    volume.faces[0][0].height = image.height() / depth;
+    volume.faces[0][0].depth = depth;
+    return volume;
+}
+
 TextureData split_cube_cross(const TextureData& cross) {
     if (is_compressed(cross.format) || cross.faces.size() != 1)
         throw Error(cross.source + ": a cube cross must be one uncompressed image");

@@ -23,5 +23,7 @@ TextureData split_cube_cross(const TextureData& cross);
 
 // A 1D texture from an image one pixel high.
 TextureData as_1d(const TextureData& image);
+// A 3D texture from an image holding `depth` equal slices stacked top to bottom.
+TextureData as_3d(const TextureData& image, int depth);
 
 }  // namespace fxview::texture
