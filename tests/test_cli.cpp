@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <tuple>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -233,4 +234,33 @@ TEST_CASE("every shipped effect passes check and renders") {
         }
     }
     CHECK(effects >= 2);
+}
+
+TEST_CASE("spectra xyz gives the published chromaticities; list, pack, cmf and plot write their outputs") {
+    // Published CIE values; tolerance as in test_spectral (1.5e-4: 5 nm -> 1 nm resampling + rounding).
+    const std::tuple<const char*, const char*, double, double> cases[] = {
+        {"D65", "1931", 0.3127, 0.3290}, {"A", "1931", 0.4476, 0.4074}, {"E", "1931", 1.0 / 3, 1.0 / 3}, {"D65", "1964", 0.3138, 0.3310}};
+    for (const auto& [name, observer, x, y] : cases) {
+        CAPTURE(name);
+        CAPTURE(observer);
+        const Result r = run(std::string("spectra xyz ") + name + " --observer " + observer + " --json");
+        REQUIRE(r.exit_code == 0);
+        const auto json = nlohmann::json::parse(r.out);
+        CHECK(std::abs(json["xy"][0].get<double>() - x) < 1.5e-4);
+        CHECK(std::abs(json["xy"][1].get<double>() - y) < 1.5e-4);
+    }
+    const auto list = nlohmann::json::parse(run("spectra list --json").out);
+    CHECK(list["spectra"][5]["name"] == "D65");
+    CHECK(run("spectra pack --format 32F --out " + temp_path("packed.exr")).exit_code == 0);
+    CHECK(fxview::image::read_float_image(temp_path("packed.exr")).width == 1024);
+    CHECK(run("spectra cmf --format 8 --out " + temp_path("cmf.png")).exit_code == 0);
+    CHECK(run("spectra plot D65 A TCS05 --out " + temp_path("plot.png")).exit_code == 0);
+    CHECK(std::filesystem::file_size(temp_path("plot.png")) > 1000);
+    CHECK(run("spectra xyz NoSuchSpectrum").exit_code == 2);
+    CHECK(run("spectra pack --format 12 --out x.png").exit_code == 2);
+    CHECK(run("spectra pack --format 8 --out " + temp_path("wrong.exr")).exit_code == 2);
+    std::ofstream(temp_path("broken.csv")) << "400,1\n390,2\n";
+    const Result broken = run("spectra xyz " + temp_path("broken.csv"));
+    CHECK(broken.exit_code == 1);
+    CHECK(broken.err.find("broken.csv:2") != std::string::npos);
 }

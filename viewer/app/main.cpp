@@ -19,9 +19,10 @@ int main(int argc, char** argv) {
         {"info", app::add_info_command(app)},
         {"list", app::add_list_command(app)},
         {"check", app::add_check_command(app)},
+        {"spectra", app::add_spectra_command(app)},
     };
     if (argc > 1 && argv[1][0] != '-' && !runners.contains(argv[1])) {
-        std::cerr << "fxview: unknown command '" << argv[1] << "' (expected render, pick, info, list or check)\n";
+        std::cerr << "fxview: unknown command '" << argv[1] << "' (expected render, pick, info, list, check or spectra)\n";
         return 2;
     }
     try {

@@ -1,0 +1,175 @@
+// `fxview spectra ...`: the seed's SpectralLibrarian and CIEXYZ2Texture as subcommands.
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include "app/commands.hpp"
+#include "app/spectrum_plot.hpp"
+#include "core/error.hpp"
+#include "core/text.hpp"
+#include "image/image_file.hpp"
+#include "spectral/colorimetry.hpp"
+#include "spectral/library.hpp"
+#include "spectral/packing.hpp"
+
+namespace fxview::app {
+
+namespace {
+
+std::string default_library() {
+    const char* override_dir = std::getenv("FXVIEW_SPECTRA_DIR");
+    return std::string(override_dir ? override_dir : FXVIEW_SOURCE_SPECTRA_DIR) + "/library.txt";
+}
+
+texture::PixelFormat parse_storage(const std::string& text) {
+    const std::string f = to_lower(text);
+    if (f == "8" || f == "rgba8") return texture::PixelFormat::RGBA8;
+    if (f == "16f" || f == "rgba16f") return texture::PixelFormat::RGBA16F;
+    if (f == "32f" || f == "rgba32f") return texture::PixelFormat::RGBA32F;
+    throw UsageError("--format: expected 8, 16F or 32F, got '" + text + "'");
+}
+
+// Writes a packed texture: 8-bit as PNG (linear values, no sRGB curve), float as EXR or PFM.
+void write_texture(const spectral::PackedTexture& packed, const std::string& path) {
+    const std::string extension = lower_extension(path);
+    const bool bytes = packed.texture.format == texture::PixelFormat::RGBA8;
+    if (bytes != (extension == ".png"))
+        throw UsageError(path + ": 8-bit textures are written as .png, float ones as .exr or .pfm");
+    image::FloatImage out(packed.texture.width(), packed.texture.height(), 4);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x) texture::read_texel(packed.texture, 0, 0, x, y, out.pixel(x, y));
+    const auto parent = std::filesystem::path(path).parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent);
+    image::write_image(path, out, image::Encoding::Linear);
+}
+
+// A spectrum named on the command line: a library name first, then any source expression or file.
+spectral::NamedSpectrum find_spectrum(const std::string& name, const std::string& library_path) {
+    const spectral::SpectralLibrary library = spectral::load_library(library_path);
+    if (library.index_of(name) >= 0) return library.at(name).named;
+    return spectral::spectrum_from_source(name, ".");
+}
+
+spectral::GamutMapping parse_mapping(const std::string& text) {
+    if (text == "clip") return spectral::GamutMapping::Clip;
+    if (text == "desaturate") return spectral::GamutMapping::Desaturate;
+    if (text == "scale") return spectral::GamutMapping::Scale;
+    throw UsageError("--mapping: expected clip, desaturate or scale, got '" + text + "'");
+}
+
+}  // namespace
+
+CommandRunner add_spectra_command(CLI::App& app) {
+    struct Options {
+        std::string library = default_library();
+        bool json = false;
+        std::string format = "32F", out, observer = "1931", mapping = "clip";
+        std::vector<std::string> names;
+        int lower = 360, upper = 830, step = 1;
+        bool normalise = false;
+        std::string size = "900x520";
+    };
+    auto o = std::make_shared<Options>();
+    CLI::App* spectra = app.add_subcommand("spectra", "Spectral library tools: list, xyz, pack, cmf, plot");
+    spectra->require_subcommand(1);
+    spectra->add_option("--library", o->library, "Spectral library file")->capture_default_str();
+
+    CLI::App* list = spectra->add_subcommand("list", "List the library's spectra with their index");
+    list->add_flag("--json", o->json, "Print JSON");
+
+    CLI::App* xyz = spectra->add_subcommand("xyz", "XYZ, chromaticity and sRGB of a spectrum");
+    xyz->add_option("spectrum", o->names, "Library name, file (.csv, CGATS) or source (daylight:6500, ...)")->required()->expected(1);
+    xyz->add_option("--observer", o->observer, "1931 (2 degree) or 1964 (10 degree)")->capture_default_str();
+    xyz->add_option("--lower", o->lower, "Lowest wavelength (nm)")->capture_default_str();
+    xyz->add_option("--upper", o->upper, "Highest wavelength (nm)")->capture_default_str();
+    xyz->add_option("--step", o->step, "Wavelength step (nm)")->capture_default_str()->check(CLI::Range(1, 100));
+    xyz->add_option("--mapping", o->mapping, "Out-of-gamut handling: clip, desaturate, scale")->capture_default_str();
+    xyz->add_flag("--json", o->json, "Print JSON");
+
+    CLI::App* pack = spectra->add_subcommand("pack", "Pack the library into the spectrum texture (512 samples, 324-835 nm)");
+    pack->add_option("--format", o->format, "8, 16F or 32F")->capture_default_str();
+    pack->add_option("--out,-o", o->out, "Output: .png for 8-bit, .exr or .pfm for float")->required();
+
+    CLI::App* cmf = spectra->add_subcommand("cmf", "Write the CMF texture (rows: CIE 1931 2 deg, CIE 1964 10 deg)");
+    cmf->add_option("--format", o->format, "8, 16F or 32F")->capture_default_str();
+    cmf->add_option("--out,-o", o->out, "Output: .png for 8-bit, .exr or .pfm for float")->required();
+
+    CLI::App* plot = spectra->add_subcommand("plot", "Draw spectra as a chart");
+    plot->add_option("spectra", o->names, "Library names, files or sources")->required();
+    plot->add_option("--out,-o", o->out, "PNG file")->required();
+    plot->add_option("--lower", o->lower, "Lowest wavelength (nm)")->capture_default_str();
+    plot->add_option("--upper", o->upper, "Highest wavelength (nm)")->capture_default_str();
+    plot->add_flag("--normalise", o->normalise, "Scale each spectrum to a peak of 1");
+    plot->add_option("--size", o->size, "Image size WxH")->capture_default_str();
+
+    return [o, list, xyz, pack, cmf, plot] {
+        if (list->parsed()) {
+            const spectral::SpectralLibrary library = spectral::load_library(o->library);
+            nlohmann::json entries = nlohmann::json::array();
+            for (size_t i = 0; i < library.entries.size(); ++i) {
+                const auto& e = library.entries[i];
+                entries.push_back({{"index", i}, {"name", e.named.name}, {"kind", e.kind}, {"source", e.named.source}});
+                if (!o->json)
+                    std::printf("%3zu  %-12s %-12s %s\n", i, e.named.name.c_str(), e.kind.c_str(), e.named.source.c_str());
+            }
+            if (o->json) std::cout << nlohmann::json{{"library", library.path}, {"spectra", entries}}.dump(2) << "\n";
+            return 0;
+        }
+        if (xyz->parsed()) {
+            const spectral::NamedSpectrum s = find_spectrum(o->names.front(), o->library);
+            const spectral::Observer observer = spectral::load_observer(o->observer);
+            const spectral::Vec3 value = spectral::spectrum_to_xyz(s.spectrum, observer, {o->lower, o->upper, o->step});
+            const auto xy = spectral::chromaticity(value);
+            const spectral::Vec3 rgb = spectral::xyz_to_linear_srgb(value, parse_mapping(o->mapping));
+            std::array<int, 3> srgb8{};
+            for (int c = 0; c < 3; ++c) srgb8[c] = static_cast<int>(std::lround(spectral::srgb_encode(rgb[c]) * 255));
+            if (o->json) {
+                std::cout << nlohmann::json{{"spectrum", s.name}, {"source", s.source}, {"observer", observer.name},
+                                            {"range_nm", {o->lower, o->upper, o->step}}, {"XYZ", value}, {"xy", xy},
+                                            {"linear_srgb", rgb}, {"srgb8", srgb8}, {"mapping", o->mapping}}
+                                 .dump()
+                          << "\n";
+            } else {
+                std::printf("%s (%s, %s)\n  XYZ    %.6f %.6f %.6f\n  xy     %.6f %.6f\n  sRGB   %.6f %.6f %.6f (linear)  %d %d %d (8-bit)\n",
+                            s.name.c_str(), s.source.c_str(), observer.name.c_str(), value[0], value[1], value[2], xy[0], xy[1],
+                            rgb[0], rgb[1], rgb[2], srgb8[0], srgb8[1], srgb8[2]);
+            }
+            return 0;
+        }
+        if (pack->parsed() || cmf->parsed()) {
+            const texture::PixelFormat format = parse_storage(o->format);
+            spectral::PackedTexture packed;
+            if (pack->parsed()) packed = spectral::pack_spectra(spectral::load_library(o->library).spectra(), format);
+            else packed = spectral::cmf_texture(spectral::load_observer("1931"), spectral::load_observer("1964"), format);
+            write_texture(packed, o->out);
+            std::cout << "wrote " << o->out << " (" << packed.texture.width() << "x" << packed.texture.height() << ", "
+                      << texture::format_name(format) << ", scale " << packed.scale << ")\n";
+            return 0;
+        }
+        if (plot->parsed()) {
+            std::vector<spectral::NamedSpectrum> spectra;
+            for (const auto& name : o->names) spectra.push_back(find_spectrum(name, o->library));
+            PlotOptions options;
+            const auto x = o->size.find('x');
+            if (x == std::string::npos) throw UsageError("--size: expected WxH");
+            options.width = std::stoi(o->size.substr(0, x));
+            options.height = std::stoi(o->size.substr(x + 1));
+            if (options.width < 300 || options.height < 200 || options.width > 8000 || options.height > 8000)
+                throw UsageError("--size: the chart needs at least 300x200 (and at most 8000x8000)");
+            if (o->lower < spectral::kMinNm || o->upper > spectral::kMaxNm || o->upper - o->lower < 10)
+                throw UsageError("--lower/--upper must lie in 300..900 nm, at least 10 nm apart");
+            options.lower_nm = o->lower;
+            options.upper_nm = o->upper;
+            options.normalise = o->normalise;
+            const auto chart = plot_spectra(spectra, spectral::load_observer("1931"), options);
+            image::write_image(o->out, chart, image::Encoding::Srgb);
+            std::cout << "wrote " << o->out << "\n";
+            return 0;
+        }
+        return 2;
+    };
+}
+
+}  // namespace fxview::app
