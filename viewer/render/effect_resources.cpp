@@ -1,9 +1,11 @@
 #include "render/effect_resources.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 #include "gl/texture_upload.hpp"
+#include "spectral/library.hpp"
 #include "texture/texture_file.hpp"
 
 namespace fxview::render {
@@ -77,12 +79,51 @@ texture::PixelFormat storage_format(effect::TextureStorage storage, texture::Pix
 
 }  // namespace
 
+namespace {
+
+std::string spectral_library_path() {
+    const char* override_dir = std::getenv("FXVIEW_SPECTRA_DIR");
+    return std::string(override_dir ? override_dir : FXVIEW_SOURCE_SPECTRA_DIR) + "/library.txt";
+}
+
+}  // namespace
+
+void EffectResources::generate(const effect::TextureResource& resource) {
+    const std::string& what = resource.files[0];
+    const texture::PixelFormat format = storage_format(resource.storage, texture::PixelFormat::RGBA32F);
+    spectral::PackedTexture packed;
+    if (what == "spectral:cmf")
+        packed = spectral::cmf_texture(spectral::load_observer("1931"), spectral::load_observer("1964"), format);
+    else if (what == "spectral:library")
+        packed = spectral::pack_spectra(spectral::load_library(spectral_library_path()).spectra(), format);
+    else
+        throw effect::EffectError(resource.where, "unknown generated texture '" + what + "' (spectral:cmf or spectral:library)");
+    GpuTexture gpu;
+    gpu.texture = gl::upload_texture(packed.texture, {false, false});
+    gpu.type = packed.texture.type;
+    gpu.format = packed.texture.format;
+    gpu.width = packed.texture.width();
+    gpu.height = packed.texture.height();
+    gpu.source = what;
+    textures_.emplace(resource.name, std::move(gpu));
+    generated_.emplace(resource.name, std::move(packed));
+}
+
+const spectral::PackedTexture* EffectResources::generated(const std::string& texture_name) const {
+    const auto found = generated_.find(texture_name);
+    return found == generated_.end() ? nullptr : &found->second;
+}
+
 EffectResources::EffectResources(const effect::Effect& effect, const effect::ParameterValues& values,
                                  const std::vector<std::string>& texture_dirs)
     : effect_(effect) {
     for (const auto& resource : effect.textures) {
         if (resource.render_target) continue;
         try {
+            if (resource.files.size() == 1 && resource.files[0].rfind("spectral:", 0) == 0) {
+                generate(resource);
+                continue;
+            }
             std::vector<std::string> paths;
             // `--set Sampler=file` replaces the file of the sampler's own texture.
             const auto override_file = values.textures.find(resource.name);

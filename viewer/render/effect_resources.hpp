@@ -1,6 +1,8 @@
 // The GPU resources of one loaded effect: its file textures (loaded, converted and uploaded once),
 // its render targets (sized from the frame, recreated when the frame size changes) and sampler
 // objects. Texture files are searched next to the effect, then in the texture folders.
+// ResourceName "spectral:cmf" and "spectral:library" are generated: the CIE colour matching
+// functions (colord-data) and the packed spectra of spectra/library.txt ($FXVIEW_SPECTRA_DIR).
 #pragma once
 #include <map>
 #include <string>
@@ -11,6 +13,7 @@
 #include "effect/effect.hpp"
 #include "effect/parameter_values.hpp"
 #include "gl/objects.hpp"
+#include "spectral/packing.hpp"
 #include "texture/texture_data.hpp"
 
 namespace fxview::render {
@@ -34,10 +37,15 @@ public:
     const GpuTexture* find(const std::string& texture_name) const;
     GLuint sampler(const effect::SamplerState& state);
     const std::map<std::string, GpuTexture>& textures() const { return textures_; }
+    // CPU copies of generated textures ("spectral:cmf", "spectral:library"), for CPU references.
+    const spectral::PackedTexture* generated(const std::string& texture_name) const;
 
 private:
+    void generate(const effect::TextureResource& resource);
+
     const effect::Effect& effect_;
     std::map<std::string, GpuTexture> textures_;
+    std::map<std::string, spectral::PackedTexture> generated_;
     std::map<std::vector<GLenum>, gl::Sampler> samplers_;
 };
 

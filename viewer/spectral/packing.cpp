@@ -48,9 +48,11 @@ PackedTexture pack_spectra(const std::vector<NamedSpectrum>& spectra, PixelForma
     PackedTexture packed = make(kSpectraPerRow * kTexelsPerSpectrum, rows, format);
     packed.texture.source = "packed spectra";
     if (format == PixelFormat::RGBA8) {
+        // Scaled by the largest value inside the CMF range 360-830 nm (1 for the normalised library);
+        // the few samples beyond 830 nm that the packing also holds are clipped to it.
         double peak = 0;
         for (const auto& s : spectra)
-            for (int i = 0; i < kPackedSamples; ++i) peak = std::max(peak, s.spectrum.at(kPackedFirstNm + i));
+            for (int nm = kCmfFirstNm; nm <= kCmfLastNm; ++nm) peak = std::max(peak, s.spectrum.at(nm));
         packed.scale = peak > 0 ? peak : 1.0;
     }
     texture::Level& level = packed.texture.faces[0][0];

@@ -4,7 +4,7 @@
 //   128 texels per spectrum; spectrum s starts at texel 128*(s % per_row) of row s / per_row.
 //   CMF texture: one texel per nm from 360 to 830 (R = xbar, G = ybar, B = zbar, A = 1); row 0 is
 //   the CIE 1931 2 degree observer, row 1 the CIE 1964 10 degree observer.
-// 8-bit storage divides by a scale (the largest value) and rounds; the scale is returned so that a
+// 8-bit storage divides by a scale (the largest value within 360-830 nm) and rounds; the scale is returned so that a
 // shader can multiply it back. Float storage uses scale 1.
 #pragma once
 #include <vector>
