@@ -20,9 +20,10 @@ int main(int argc, char** argv) {
         {"list", app::add_list_command(app)},
         {"check", app::add_check_command(app)},
         {"spectra", app::add_spectra_command(app)},
+        {"compare", app::add_compare_command(app)},
     };
     if (argc > 1 && argv[1][0] != '-' && !runners.contains(argv[1])) {
-        std::cerr << "fxview: unknown command '" << argv[1] << "' (expected render, pick, info, list, check or spectra)\n";
+        std::cerr << "fxview: unknown command '" << argv[1] << "' (expected render, pick, info, list, check, spectra or compare)\n";
         return 2;
     }
     try {

@@ -35,6 +35,7 @@ public:
     void reload_textures();
 
     void render(const scene::Scene& scene, const gl::RenderTarget& target, FrameTiming timing = {});
+    const EffectResources& resources() const { return *loaded_->resources; }
 
 private:
     struct Loaded {

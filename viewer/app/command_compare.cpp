@@ -1,0 +1,73 @@
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <iostream>
+
+#include "app/commands.hpp"
+#include "app/gpu_cpu_compare.hpp"
+#include "core/error.hpp"
+#include "image/image_file.hpp"
+
+namespace fxview::app {
+
+CommandRunner add_compare_command(CLI::App& app) {
+    struct Options {
+        SceneOptions scene;
+        std::vector<std::string> reference_sets;
+        std::string heatmap;
+        bool json = false;
+    };
+    auto options = std::make_shared<Options>();
+    options->scene.size = "128x128";
+    CLI::App* command = app.add_subcommand(
+        "compare", "Render a technique on the GPU and check every covered pixel against its CPU reference");
+    add_scene_options(*command, options->scene);
+    command->add_option("--reference-set", options->reference_sets,
+                        "NAME=VALUE for the CPU side only (proves that the comparison can fail)");
+    command->add_option("--heatmap", options->heatmap, "Write the error heat map (PNG); with several techniques, T is appended");
+    command->add_flag("--json", options->json, "Print one JSON object per technique");
+    return [options] {
+        RenderRequest request = to_render_request(options->scene);
+        if (request.effect.path.empty()) throw UsageError("compare needs an effect file");
+        if (request.samples > 1) throw UsageError("compare renders without MSAA: every pixel must come from one fragment");
+        std::vector<std::string> techniques;
+        if (request.effect.technique.empty()) techniques = technique_names(request.effect.path);
+        else techniques = {request.effect.technique};
+        bool all_pass = true;
+        for (const auto& technique : techniques) {
+            const CompareResult r = compare_technique(request, technique, options->reference_sets);
+            all_pass = all_pass && r.pass;
+            if (!options->heatmap.empty() && r.has_reference) {
+                std::string path = options->heatmap;
+                if (techniques.size() > 1) {
+                    const std::filesystem::path p(path);
+                    path = (p.parent_path() / (p.stem().string() + "-" + technique + p.extension().string())).string();
+                }
+                image::write_image(path, r.heat_map);
+            }
+            if (options->json) {
+                nlohmann::json out = {{"technique", r.technique}, {"reference", r.has_reference}, {"pass", r.pass}};
+                if (r.has_reference) {
+                    out.update({{"pixels", r.pixels},
+                                {"max_abs_error", r.max_abs_error},
+                                {"mean_abs_error", r.mean_abs_error},
+                                {"worst_pixel", {{"x", r.worst_pixel.x}, {"y", r.worst_pixel.y}, {"gpu", r.worst_pixel.gpu}, {"cpu", r.worst_pixel.cpu}}},
+                                {"mismatched_8bit", r.mismatched_8bit},
+                                {"tolerance", r.tolerance},
+                                {"tolerance_reason", r.tolerance_reason}});
+                } else {
+                    out["error"] = "no CPU reference for this technique";
+                }
+                std::cout << out.dump() << "\n";
+            } else if (!r.has_reference) {
+                std::cout << r.technique << ": no CPU reference - FAIL\n";
+            } else {
+                std::printf("%-20s %s  pixels %ld  max %.3g  mean %.3g  8-bit mismatches %ld  tolerance %.3g\n", r.technique.c_str(),
+                            r.pass ? "pass" : "FAIL", r.pixels, r.max_abs_error, r.mean_abs_error, r.mismatched_8bit, r.tolerance);
+            }
+        }
+        return all_pass ? 0 : 1;
+    };
+}
+
+}  // namespace fxview::app

@@ -1,0 +1,112 @@
+#include "app/gpu_cpu_compare.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include "context/context.hpp"
+#include "effect/preset.hpp"
+#include "gl/render_target.hpp"
+#include "image/color_encoding.hpp"
+#include "reference/reference.hpp"
+#include "render/effect_session.hpp"
+
+namespace fxview::app {
+
+std::vector<std::string> technique_names(const std::string& effect_path) {
+    const effect::Effect effect = effect::load_effect(effect_path, effect_load_options());
+    std::vector<std::string> names;
+    for (const auto& t : effect.techniques) names.push_back(t.name);
+    return names;
+}
+
+namespace {
+
+// Blue (no error) through yellow (at the tolerance) to red (twice the tolerance and beyond).
+std::array<float, 3> heat(double ratio) {
+    const float t = static_cast<float>(std::clamp(ratio, 0.0, 2.0));
+    if (t <= 1.0f) return {t, t, 1.0f - t};
+    return {1.0f, 2.0f - t, 0.0f};
+}
+
+}  // namespace
+
+CompareResult compare_technique(const RenderRequest& request, const std::string& technique,
+                                const std::vector<std::string>& reference_sets) {
+    context::ContextOptions context_options;
+    context_options.backend = request.backend;
+    context_options.window_width = request.width;
+    context_options.window_height = request.height;
+    context_options.window_visible = false;
+    context_options.debug_output = request.gl_debug;
+    const auto gl_context = context::create_context(context_options);
+
+    render::EffectSession session(request.effect.path, effect_load_options(), texture_folders());
+    if (!technique.empty()) session.select_technique(technique);
+    if (!request.effect.preset.empty()) effect::load_preset(request.effect.preset, session.effect(), session.values());
+    for (const auto& assignment : request.effect.sets) effect::set_value_from_text(session.effect(), session.values(), assignment);
+    if (!session.values().textures.empty()) session.reload_textures();
+
+    CompareResult result;
+    result.technique = session.technique();
+    const std::string stem = std::filesystem::path(request.effect.path).stem().string();
+    const reference::Reference* ref = reference::find_reference(stem, result.technique);
+    result.has_reference = ref != nullptr;
+    if (!ref) return result;
+    result.tolerance = ref->tolerance;
+    result.tolerance_reason = ref->why;
+
+    // No MSAA: every pixel's colour and captured inputs must come from one fragment.
+    gl::RenderTarget target({request.width, request.height, 4, 0});
+    session.render(request.scene, target);
+    const image::FloatImage gpu = target.read_color(0), positions = target.read_color(1), normals = target.read_color(2),
+                            uvs = target.read_color(3);
+
+    effect::ParameterValues cpu_values = session.values();
+    for (const auto& assignment : reference_sets) effect::set_value_from_text(session.effect(), cpu_values, assignment);
+    const reference::ReferenceContext reference_context{cpu_values, session.resources()};
+    const glm::dvec3 camera(math::camera_world_position(request.scene.camera.pose));
+    const glm::dvec3 light(request.scene.light.world_position());
+
+    result.heat_map = image::FloatImage(request.width, request.height, 4);
+    double error_sum = 0;
+    for (int y = 0; y < request.height; ++y)
+        for (int x = 0; x < request.width; ++x) {
+            float* heat_pixel = result.heat_map.pixel(x, y);
+            heat_pixel[3] = 1.0f;
+            if (positions.pixel(x, y)[3] <= 0.0f) continue;  // not covered
+            reference::ShadingInput input;
+            input.position = glm::dvec3(positions.pixel(x, y)[0], positions.pixel(x, y)[1], positions.pixel(x, y)[2]);
+            input.normal = glm::dvec3(normals.pixel(x, y)[0], normals.pixel(x, y)[1], normals.pixel(x, y)[2]);
+            input.uv = glm::dvec2(uvs.pixel(x, y)[0], uvs.pixel(x, y)[1]);
+            input.camera = camera;
+            input.light = light;
+            const std::array<double, 4> cpu = ref->shade(input, reference_context);
+            double pixel_error = 0;
+            bool mismatch = false;
+            for (int c = 0; c < 4; ++c) {
+                const double g = gpu.pixel(x, y)[c];
+                pixel_error = std::max(pixel_error, std::abs(g - cpu[c]));
+                const auto encoding = c < 3 ? image::Encoding::Srgb : image::Encoding::Linear;
+                const int code_gpu = image::to_8bit(static_cast<float>(g), encoding);
+                const int code_cpu = image::to_8bit(static_cast<float>(cpu[c]), encoding);
+                mismatch = mismatch || std::abs(code_gpu - code_cpu) > 1;
+            }
+            ++result.pixels;
+            error_sum += pixel_error;
+            if (mismatch) ++result.mismatched_8bit;
+            if (pixel_error > result.max_abs_error || result.worst_pixel.x < 0) {
+                result.max_abs_error = std::max(result.max_abs_error, pixel_error);
+                result.worst_pixel.x = x;
+                result.worst_pixel.y = y;
+                for (int c = 0; c < 4; ++c) result.worst_pixel.gpu[c] = gpu.pixel(x, y)[c];
+                result.worst_pixel.cpu = cpu;
+            }
+            const auto colour = heat(pixel_error / ref->tolerance);
+            std::copy(colour.begin(), colour.end(), heat_pixel);
+        }
+    result.mean_abs_error = result.pixels > 0 ? error_sum / static_cast<double>(result.pixels) : 0.0;
+    result.pass = result.pixels > 0 && result.mismatched_8bit == 0 && result.max_abs_error <= result.tolerance;
+    return result;
+}
+
+}  // namespace fxview::app

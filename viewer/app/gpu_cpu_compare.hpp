@@ -1,0 +1,37 @@
+// The GPU-vs-CPU comparison (docs/cpu-reference.md): render a technique into a float target that
+// also captures the shared vertex stage's outputs, shade every covered pixel again on the CPU with
+// the technique's reference, and measure the differences.
+#pragma once
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/scene_options.hpp"
+#include "image/image.hpp"
+
+namespace fxview::app {
+
+struct CompareResult {
+    std::string technique;
+    bool has_reference = false;
+    long pixels = 0;  // covered pixels compared
+    double max_abs_error = 0, mean_abs_error = 0;
+    struct {
+        int x = -1, y = -1;
+        std::array<double, 4> gpu{}, cpu{};
+    } worst_pixel;
+    long mismatched_8bit = 0;  // pixels whose displayed 8-bit value differs by more than one code
+    double tolerance = 0;
+    std::string tolerance_reason;
+    bool pass = false;
+    image::FloatImage heat_map;  // error / tolerance per pixel (RGB), black where nothing is covered
+};
+
+// `technique` empty: the request's technique, else the effect's first. `reference_sets` are
+// NAME=VALUE assignments given to the CPU side only (to show that a comparison can fail).
+CompareResult compare_technique(const RenderRequest& request, const std::string& technique,
+                                const std::vector<std::string>& reference_sets);
+std::vector<std::string> technique_names(const std::string& effect_path);
+
+}  // namespace fxview::app

@@ -1,0 +1,33 @@
+#include "reference/reference.hpp"
+
+#include <map>
+
+#include "core/error.hpp"
+#include "reference/spectral_reference.hpp"
+
+namespace fxview::reference {
+
+double ReferenceContext::number(const std::string& name) const {
+    const auto found = values.numbers.find(name);
+    if (found == values.numbers.end() || found->second.empty()) throw Error("reference: the effect has no parameter " + name);
+    return found->second[0];
+}
+
+const spectral::PackedTexture& ReferenceContext::generated(const std::string& texture) const {
+    const spectral::PackedTexture* packed = resources.generated(texture);
+    if (!packed) throw Error("reference: the effect has no generated texture " + texture);
+    return *packed;
+}
+
+const Reference* find_reference(const std::string& effect_stem, const std::string& technique) {
+    // Built once from the reference modules; keys are "effect/technique".
+    static const std::map<std::string, Reference> references = [] {
+        std::map<std::string, Reference> all;
+        for (auto& [name, reference] : spectral_references()) all.emplace("wavelength/" + name, std::move(reference));
+        return all;
+    }();
+    const auto found = references.find(effect_stem + "/" + technique);
+    return found == references.end() ? nullptr : &found->second;
+}
+
+}  // namespace fxview::reference

@@ -1,0 +1,46 @@
+// CPU references: for every technique that fxview ships, an independent C++ implementation in
+// double precision, written from the physics (not a line-by-line copy of the GLSL). It shades one
+// pixel from the fragment inputs the GPU captured in the same draw (docs/cpu-reference.md).
+#pragma once
+#include <array>
+#include <functional>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "effect/parameter_values.hpp"
+#include "render/effect_resources.hpp"
+
+namespace fxview::reference {
+
+struct ShadingInput {
+    glm::dvec3 position{0.0};  // world space
+    glm::dvec3 normal{0.0};    // interpolated, not normalised
+    glm::dvec2 uv{0.0};
+    glm::dvec3 camera{0.0};    // world-space camera position
+    glm::dvec3 light{0.0};     // world-space light position
+};
+
+// What a reference may read besides the pixel's inputs: the parameter values and the same
+// texture data the GPU sampled (quantised alike).
+struct ReferenceContext {
+    const effect::ParameterValues& values;
+    const render::EffectResources& resources;
+
+    double number(const std::string& name) const;  // first component of a parameter; Error if absent
+    const spectral::PackedTexture& generated(const std::string& texture) const;
+};
+
+using Shader = std::function<std::array<double, 4>(const ShadingInput&, const ReferenceContext&)>;
+
+struct Reference {
+    Shader shade;
+    double tolerance = 1e-4;  // largest float difference allowed per channel
+    std::string why;          // where the tolerance comes from
+};
+
+// The reference for technique `technique` of the effect file named `effect_stem` (file name without
+// extension), or nullptr if there is none.
+const Reference* find_reference(const std::string& effect_stem, const std::string& technique);
+
+}  // namespace fxview::reference
