@@ -264,3 +264,23 @@ TEST_CASE("spectra xyz gives the published chromaticities; list, pack, cmf and p
     CHECK(broken.exit_code == 1);
     CHECK(broken.err.find("broken.csv:2") != std::string::npos);
 }
+
+TEST_CASE("compare --json: pass with error figures, exit 1 for a CPU-only change or no reference") {
+    const std::string effect = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/wavelength.fx";
+    const std::string heatmap = temp_path("heat.png");
+    const Result ok = run("compare " + effect + " -t Blinn --size 96x96 --json --heatmap " + heatmap);
+    REQUIRE(ok.exit_code == 0);
+    const auto json = nlohmann::json::parse(ok.out);
+    for (const char* key : {"technique", "pixels", "max_abs_error", "mean_abs_error", "worst_pixel", "mismatched_8bit", "tolerance", "pass"})
+        CHECK(json.contains(key));
+    CHECK(json["pass"] == true);
+    CHECK(json["pixels"].get<int>() > 1000);
+    CHECK(std::filesystem::exists(temp_path("heat-Blinn.png")));
+    const Result wrong = run("compare " + effect + " -t Blinn --size 96x96 --json --reference-set Power=8 --heatmap " + heatmap);
+    CHECK(wrong.exit_code == 1);
+    CHECK(nlohmann::json::parse(wrong.out)["pass"] == false);
+    const Result none = run("compare " + std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/debug.fx -t Normals --json --heatmap " + heatmap);
+    CHECK(none.exit_code == 1);
+    CHECK(nlohmann::json::parse(none.out)["reference"] == false);
+    CHECK(run("compare --size 32x32").exit_code == 2);  // no effect
+}

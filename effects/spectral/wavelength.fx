@@ -6,9 +6,9 @@
 #include "spectral.glsl"
 
 // Indices into spectra/library.txt (`fxview spectra list`).
-uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = "spectrum"; string UIGroup = "Spectra";
+uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
                             string UIHelp = "Index in spectra/library.txt (5 = D65)"; > = 5;
-uniform int ObjectSpectrum < string UIName = "Object spectrum"; string UIWidget = "spectrum"; string UIGroup = "Spectra";
+uniform int ObjectSpectrum < string UIName = "Object spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
                              string UIHelp = "Index in spectra/library.txt (10-23 = CIE test colour samples)"; > = 14;
 uniform float Brightness < string UIName = "Brightness"; float UIMin = 0; float UIMax = 8; float UIStep = 0.1; string UIGroup = "Lighting";
                            string UIHelp = "Intensity scale (Code 11 uses 2)"; > = 2.0;

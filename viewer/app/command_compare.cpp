@@ -14,7 +14,7 @@ CommandRunner add_compare_command(CLI::App& app) {
     struct Options {
         SceneOptions scene;
         std::vector<std::string> reference_sets;
-        std::string heatmap;
+        std::string heatmap = "out/compare.png";
         bool json = false;
     };
     auto options = std::make_shared<Options>();
@@ -24,7 +24,8 @@ CommandRunner add_compare_command(CLI::App& app) {
     add_scene_options(*command, options->scene);
     command->add_option("--reference-set", options->reference_sets,
                         "NAME=VALUE for the CPU side only (proves that the comparison can fail)");
-    command->add_option("--heatmap", options->heatmap, "Write the error heat map (PNG); with several techniques, T is appended");
+    command->add_option("--heatmap", options->heatmap, "Error heat map (PNG); -T is appended to the name per technique")
+        ->capture_default_str();
     command->add_flag("--json", options->json, "Print one JSON object per technique");
     return [options] {
         RenderRequest request = to_render_request(options->scene);
@@ -38,12 +39,10 @@ CommandRunner add_compare_command(CLI::App& app) {
             const CompareResult r = compare_technique(request, technique, options->reference_sets);
             all_pass = all_pass && r.pass;
             if (!options->heatmap.empty() && r.has_reference) {
-                std::string path = options->heatmap;
-                if (techniques.size() > 1) {
-                    const std::filesystem::path p(path);
-                    path = (p.parent_path() / (p.stem().string() + "-" + technique + p.extension().string())).string();
-                }
-                image::write_image(path, r.heat_map);
+                const std::filesystem::path p(options->heatmap);
+                if (!p.parent_path().empty()) std::filesystem::create_directories(p.parent_path());
+                image::write_image((p.parent_path() / (p.stem().string() + "-" + technique + p.extension().string())).string(),
+                                   r.heat_map);
             }
             if (options->json) {
                 nlohmann::json out = {{"technique", r.technique}, {"reference", r.has_reference}, {"pass", r.pass}};

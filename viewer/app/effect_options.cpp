@@ -3,6 +3,8 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "spectral/library.hpp"
+
 namespace fxview::app {
 
 void add_effect_options(CLI::App& command, EffectOptions& options) {
@@ -17,7 +19,16 @@ void add_effect_options(CLI::App& command, EffectOptions& options) {
 effect::LoadOptions effect_load_options() {
     const char* override_dir = std::getenv("FXVIEW_EFFECTS_DIR");
     const std::filesystem::path root = override_dir ? override_dir : FXVIEW_SOURCE_EFFECTS_DIR;
-    return {{(root / "lib").string()}};
+    effect::LoadOptions options{{(root / "lib").string()}, {}};
+    // Spectrum parameters (UIItems = "spectral:library") list the library's names, so that
+    // `--set LightSpectrum=D65` works; a missing or broken library only leaves them as numbers.
+    const char* spectra_dir = std::getenv("FXVIEW_SPECTRA_DIR");
+    try {
+        const auto library = spectral::load_library(std::string(spectra_dir ? spectra_dir : FXVIEW_SOURCE_SPECTRA_DIR) + "/library.txt");
+        for (const auto& entry : library.entries) options.item_lists["spectral:library"].push_back(entry.named.name);
+    } catch (const std::exception&) {
+    }
+    return options;
 }
 
 std::vector<std::string> texture_folders() {

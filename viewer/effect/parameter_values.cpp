@@ -1,5 +1,6 @@
 #include "effect/parameter_values.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -50,6 +51,9 @@ void set_value_from_text(const Effect& effect, ParameterValues& values, const st
             parsed.push_back(i < 7 ? srgb_to_linear(byte / 255.0) : byte / 255.0);  // alpha stays linear
         }
         if (target.size() == 4 && parsed.size() == 3) parsed.push_back(1.0);
+    } else if (const auto item = std::find(parameter->ui.items.begin(), parameter->ui.items.end(), text);
+               item != parameter->ui.items.end() && component_count(parameter->type) == 1) {
+        parsed.push_back(static_cast<double>(item - parameter->ui.items.begin()));  // a combo entry by name
     } else {
         size_t start = 0;
         for (size_t i = 0; i <= text.size(); ++i) {

@@ -17,7 +17,7 @@ struct ParameterValues {
 ParameterValues default_values(const Effect& effect);  // zeros where the file gives no default
 
 // Parses NAME=VALUE as the command line writes it: 0.5, 1,0,0, #rrggbb (sRGB hex, stored linear),
-// true/false, or a file path for a sampler. Throws UsageError naming the parameter for an unknown name or a malformed value.
+// true/false, a combo entry by name (its index), or a file path for a sampler. Throws UsageError naming the parameter for an unknown name or a malformed value.
 void set_value_from_text(const Effect& effect, ParameterValues& values, const std::string& assignment);
 
 }  // namespace fxview::effect

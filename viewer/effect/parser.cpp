@@ -472,6 +472,10 @@ Effect load_effect(const std::string& path, const LoadOptions& options) {
     effect.path = path;
     effect.sources = SourceMap::load(path, options.include_dirs);
     Parser(effect).parse();
+    for (auto& parameter : effect.parameters)
+        if (parameter.ui.items.size() == 1)
+            if (const auto list = options.item_lists.find(parameter.ui.items[0]); list != options.item_lists.end())
+                parameter.ui.items = list->second;
     return effect;
 }
 

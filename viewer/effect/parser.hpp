@@ -1,6 +1,7 @@
 // Reading effect files (docs/effect-format.md) into effect::Effect. Every error is an EffectError
 // with the `file:line` of the effect or include where it was found.
 #pragma once
+#include <map>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,9 @@ namespace fxview::effect {
 
 struct LoadOptions {
     std::vector<std::string> include_dirs;  // searched after the including file's folder (effects/lib)
+    // Combo entries filled in by the application: a parameter whose UIItems is exactly one of these
+    // keys (e.g. "spectral:library") gets the list (e.g. the library's spectrum names).
+    std::map<std::string, std::vector<std::string>> item_lists;
 };
 
 Effect load_effect(const std::string& path, const LoadOptions& options);
