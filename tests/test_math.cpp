@@ -100,3 +100,33 @@ TEST_CASE("normal matrix keeps normals perpendicular under non-uniform scale") {
     CHECK(n.x == doctest::Approx(1.0f / std::sqrt(5.0f)));
     CHECK(n.y == doctest::Approx(-2.0f / std::sqrt(5.0f)));
 }
+
+#include "math/arcball.hpp"
+
+TEST_CASE("arcball: a drag to the right turns about +Y by the angle between the ball points") {
+    // From the centre (0,0,1) to (0.5, 0, sqrt(0.75)): axis +Y, angle asin(0.5) = 30 degrees.
+    const glm::quat q = rotation_from_axis_angle({0, 1, 0}, 30.0f);
+    const glm::quat drag = arcball_rotation({0.0f, 0.0f}, {0.5f, 0.0f});
+    CHECK(std::abs(std::abs(glm::dot(q, drag)) - 1.0f) < 1e-6f);
+    // Upwards: about -X (the front of the ball moves up).
+    const glm::vec3 front = glm::mat3_cast(arcball_rotation({0, 0}, {0, 0.5f})) * glm::vec3(0, 0, 1);
+    CHECK(front.y == doctest::Approx(0.5f));
+    // Outside the ball the point sits on the rim; no drag, no rotation.
+    CHECK(glm::length(arcball_point({3.0f, 4.0f})) == doctest::Approx(1.0f));
+    CHECK(arcball_point({3.0f, 4.0f}).z == 0.0f);
+    CHECK(arcball_rotation({0.2f, 0.1f}, {0.2f, 0.1f}) == glm::quat(1, 0, 0, 0));
+}
+
+TEST_CASE("rotate_in_view turns an object the way the mouse moved, whatever the camera") {
+    // The camera looks from +X (world turned -90 degrees about Y); a drag to the right must turn
+    // the object about the view's up axis, world +Y.
+    const glm::quat camera = rotation_from_axis_angle({0, 1, 0}, -90.0f);
+    const glm::quat drag = rotation_from_axis_angle({0, 1, 0}, 30.0f);
+    const glm::quat turned = rotate_in_view(glm::quat(1, 0, 0, 0), drag, camera);
+    const glm::vec3 up = glm::mat3_cast(turned) * glm::vec3(0, 1, 0);
+    CHECK(up.y == doctest::Approx(1.0f));
+    // A view-space drag about view X maps to the world axis the camera shows as X (world +Z here).
+    const glm::quat tilt = rotate_in_view(glm::quat(1, 0, 0, 0), rotation_from_axis_angle({1, 0, 0}, 90.0f), camera);
+    const glm::vec3 axis = glm::axis(tilt);
+    CHECK(std::abs(axis.z) == doctest::Approx(1.0f));
+}

@@ -9,7 +9,7 @@ in VertexData {
     vec2 uv;
 } fs_in;
 
-uniform int u_mode;  // 0 normals, 1 texture coordinates, 2 vector to camera, 3 vector to light
+uniform int u_mode;  // 0 normals, 1 texture coordinates, 2 vector to camera, 3 vector to light, 4 plain Lambert
 uniform vec3 u_camera_position;
 uniform vec3 u_light_position;
 
@@ -25,6 +25,8 @@ void main() {
         color = map_vector(u_camera_position - fs_in.world_position);
     else if (u_mode == 3)
         color = map_vector(u_light_position - fs_in.world_position);
+    else if (u_mode == 4)  // plain rendering without any effect: grey Lambert, linear RGB
+        color = vec3(0.8) * (0.05 + 0.95 * max(dot(normalize(fs_in.normal), normalize(u_light_position - fs_in.world_position)), 0.0));
     else
         color = map_vector(fs_in.normal);
     out_color = vec4(color, 1.0);

@@ -7,6 +7,7 @@
 
 #include "app/commands.hpp"
 #include "core/error.hpp"
+#include "ui/command_view.hpp"
 
 int main(int argc, char** argv) {
     using namespace fxview;
@@ -21,9 +22,10 @@ int main(int argc, char** argv) {
         {"check", app::add_check_command(app)},
         {"spectra", app::add_spectra_command(app)},
         {"compare", app::add_compare_command(app)},
+        {"view", ui::add_view_command(app)},
     };
     if (argc > 1 && argv[1][0] != '-' && !runners.contains(argv[1])) {
-        std::cerr << "fxview: unknown command '" << argv[1] << "' (expected render, pick, info, list, check, spectra or compare)\n";
+        std::cerr << "fxview: unknown command '" << argv[1] << "' (expected view, render, pick, info, list, check, spectra or compare)\n";
         return 2;
     }
     try {

@@ -17,7 +17,8 @@ DebugView parse_debug_view(std::string_view name) {
     if (name == "uv") return DebugView::TexCoords;
     if (name == "camera") return DebugView::ToCamera;
     if (name == "light") return DebugView::ToLight;
-    throw UsageError("unknown debug view '" + std::string(name) + "' (expected normals, uv, camera or light)");
+    if (name == "plain") return DebugView::Plain;
+    throw UsageError("unknown debug view '" + std::string(name) + "' (expected normals, uv, camera, light or plain)");
 }
 
 std::string_view debug_view_name(DebugView view) {
@@ -26,6 +27,7 @@ std::string_view debug_view_name(DebugView view) {
         case DebugView::TexCoords: return "uv";
         case DebugView::ToCamera: return "camera";
         case DebugView::ToLight: return "light";
+        case DebugView::Plain: return "plain";
     }
     return "?";
 }
@@ -35,16 +37,18 @@ DebugRenderer::DebugRenderer()
                                  {GL_FRAGMENT_SHADER, std::string(builtin_shaders::debug_frag),
                                   "effects/builtin/debug.frag"}})) {}
 
-void DebugRenderer::render(const scene::Scene& scene, DebugView view, const gl::RenderTarget& target) {
+void DebugRenderer::render(const scene::Scene& scene, DebugView view, const gl::RenderTarget& target, bool clear) {
     target.bind_for_drawing();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);  // debug views show both sides: open OBJ meshes stay visible
     glDisable(GL_BLEND);
-    glClearColor(scene.background.r, scene.background.g, scene.background.b, scene.background.a);
-    glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (clear) {
+        glClearColor(scene.background.r, scene.background.g, scene.background.b, scene.background.a);
+        glClearDepth(1.0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
 
     const float aspect = static_cast<float>(target.width()) / static_cast<float>(target.height());
     const glm::mat4 view_projection =

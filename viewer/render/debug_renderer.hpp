@@ -12,15 +12,16 @@
 
 namespace fxview::render {
 
-enum class DebugView { Normals = 0, TexCoords = 1, ToCamera = 2, ToLight = 3 };
+enum class DebugView { Normals = 0, TexCoords = 1, ToCamera = 2, ToLight = 3, Plain = 4 };
 
-DebugView parse_debug_view(std::string_view name);  // normals|uv|camera|light; UsageError otherwise
+DebugView parse_debug_view(std::string_view name);  // normals|uv|camera|light|plain; UsageError otherwise
 std::string_view debug_view_name(DebugView view);
 
 class DebugRenderer {
 public:
     DebugRenderer();  // compiles the built-in program; needs a current context
-    void render(const scene::Scene& scene, DebugView view, const gl::RenderTarget& target);
+    // `clear`: start the frame (false: draw over what the target holds, for mixed renderers).
+    void render(const scene::Scene& scene, DebugView view, const gl::RenderTarget& target, bool clear = true);
 
 private:
     gl::Program program_;

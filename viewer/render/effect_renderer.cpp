@@ -44,7 +44,7 @@ EffectRenderer::PassFramebuffer& EffectRenderer::bind_pass_targets(const effect:
 
 void EffectRenderer::render(const scene::Scene& scene, const effect::CompiledTechnique& technique,
                             const effect::ParameterValues& values, EffectResources& resources,
-                            const gl::RenderTarget& target, FrameTiming timing) {
+                            const gl::RenderTarget& target, FrameTiming timing, bool clear_target) {
     resources.fit_render_targets(target.width(), target.height());
     if (!empty_vertex_array_) empty_vertex_array_ = gl::create_vertex_array();
     effect::FrameContext frame;
@@ -58,6 +58,7 @@ void EffectRenderer::render(const scene::Scene& scene, const effect::CompiledTec
     frame.frame = timing.frame;
 
     std::set<const void*> cleared;  // targets cleared this frame: each is cleared before its first pass
+    if (!clear_target) cleared.insert(&target);  // the caller draws several objects into one frame
     for (const effect::CompiledPass& pass : technique.passes) {
         const effect::RenderStates& states = pass.pass->states;
         const void* destination = &target;

@@ -21,7 +21,7 @@ class EffectRenderer {
 public:
     void render(const scene::Scene& scene, const effect::CompiledTechnique& technique,
                 const effect::ParameterValues& values, EffectResources& resources, const gl::RenderTarget& target,
-                FrameTiming timing = {});
+                FrameTiming timing = {}, bool clear_target = true);
     // Forgets per-pass framebuffers (call when the effect is replaced).
     void reset() { pass_framebuffers_.clear(); }
 

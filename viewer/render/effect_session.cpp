@@ -70,8 +70,8 @@ void EffectSession::reload_textures() {
     watch();
 }
 
-void EffectSession::render(const scene::Scene& scene, const gl::RenderTarget& target, FrameTiming timing) {
-    renderer_.render(scene, loaded_->techniques.at(technique_), values_, *loaded_->resources, target, timing);
+void EffectSession::render(const scene::Scene& scene, const gl::RenderTarget& target, FrameTiming timing, bool clear_target) {
+    renderer_.render(scene, loaded_->techniques.at(technique_), values_, *loaded_->resources, target, timing, clear_target);
 }
 
 void EffectSession::watch() {

@@ -34,7 +34,7 @@ public:
     // Applies changed texture overrides (--set Sampler=file, presets): reloads the textures.
     void reload_textures();
 
-    void render(const scene::Scene& scene, const gl::RenderTarget& target, FrameTiming timing = {});
+    void render(const scene::Scene& scene, const gl::RenderTarget& target, FrameTiming timing = {}, bool clear_target = true);
     const EffectResources& resources() const { return *loaded_->resources; }
 
 private:

@@ -1,0 +1,54 @@
+#include "ui/command_view.hpp"
+
+#include "app/scene_options.hpp"
+#include "app/value_parsing.hpp"
+#include "ui/viewer.hpp"
+
+namespace fxview::ui {
+
+app::CommandRunner add_view_command(CLI::App& app) {
+    struct Options {
+        app::SceneOptions scene;
+        std::string window = "1280x800";
+        std::string render_size;
+        int frames = 0;
+        std::string screenshot, render_screenshot, script;
+    };
+    auto o = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand("view", "Open the interactive viewer (GLFW window with Dear ImGui)");
+    app::add_scene_options(*command, o->scene);
+    command->add_option("--window", o->window, "Window size WxH")->capture_default_str();
+    command->add_option("--render-size", o->render_size, "Fixed render-view resolution WxH (default: the view's size)");
+    command->add_option("--frames", o->frames, "Render this many frames, then exit (after --script)")->check(CLI::Range(0, 1000000));
+    command->add_option("--screenshot", o->screenshot, "With --frames: save the whole window (UI included) at exit");
+    command->add_option("--render-screenshot", o->render_screenshot, "With --frames: save the render view at exit");
+    command->add_option("--script", o->script, "Play UI actions from a file (docs/viewer.md)");
+    return [o] {
+        o->scene.backend = "glfw";
+        const app::RenderRequest request = app::to_render_request(o->scene);
+        ViewerOptions options;
+        options.effect_path = request.effect.path;
+        options.technique = request.effect.technique;
+        options.sets = request.effect.sets;
+        options.preset = request.effect.preset;
+        options.scene = request.scene;
+        const glm::ivec2 window = app::parse_size("--window", o->window);
+        options.window_width = window.x;
+        options.window_height = window.y;
+        if (!o->render_size.empty()) {
+            const glm::ivec2 render = app::parse_size("--render-size", o->render_size);
+            options.render_width = render.x;
+            options.render_height = render.y;
+        }
+        options.frames = o->frames;
+        options.screenshot = o->screenshot;
+        options.render_screenshot = o->render_screenshot;
+        if ((!o->screenshot.empty() || !o->render_screenshot.empty()) && o->frames == 0)
+            throw UsageError("--screenshot and --render-screenshot need --frames N");
+        if (!o->script.empty()) options.script = load_script(o->script);
+        options.gl_debug = request.gl_debug;
+        return run_viewer(options);
+    };
+}
+
+}  // namespace fxview::ui

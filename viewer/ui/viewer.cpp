@@ -1,0 +1,767 @@
+#include "ui/viewer.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "app/effect_options.hpp"
+#include "context/context.hpp"
+#include "core/error.hpp"
+#include "effect/preset.hpp"
+#include "gl/render_target.hpp"
+#include "image/image_file.hpp"
+#include "image/pixel_info.hpp"
+#include "math/arcball.hpp"
+#include "scene/shapes.hpp"
+#include "ui/display_pass.hpp"
+#include "ui/imgui_layer.hpp"
+#include "ui/parameter_panel.hpp"
+
+namespace fxview::ui {
+namespace {
+
+namespace fs = std::filesystem;
+
+// What each object shows: the effect (with its own technique) or one of the built-in views.
+enum class ViewMode { Effect, Plain, Normals, TexCoords, ToCamera, ToLight };
+constexpr const char* kViewNames[] = {"effect", "plain", "normals", "uv", "camera", "light"};
+
+ViewMode parse_view(const std::string& name) {
+    for (int i = 0; i < 6; ++i)
+        if (name == kViewNames[i]) return static_cast<ViewMode>(i);
+    throw UsageError("unknown view '" + name + "' (effect, plain, normals, uv, camera, light)");
+}
+
+render::DebugView debug_view(ViewMode mode) {
+    switch (mode) {
+        case ViewMode::Normals: return render::DebugView::Normals;
+        case ViewMode::TexCoords: return render::DebugView::TexCoords;
+        case ViewMode::ToCamera: return render::DebugView::ToCamera;
+        case ViewMode::ToLight: return render::DebugView::ToLight;
+        default: return render::DebugView::Plain;
+    }
+}
+
+struct ObjectState {
+    scene::SceneObject object;
+    std::string technique;
+    ViewMode view = ViewMode::Effect;
+    bool grouped = false;
+};
+
+enum class Target { Camera, Light, Object };
+
+struct Pick {
+    bool valid = false;
+    image::PixelInfo info;
+    std::array<double, 2> xy{};  // chromaticity of the linear sRGB value
+};
+
+// xy of a linear sRGB colour (inverse of eq. 9, IEC 61966-2-1 primaries, D65).
+std::array<double, 2> chromaticity_of(const std::array<float, 4>& rgb) {
+    const double r = rgb[0], g = rgb[1], b = rgb[2];
+    const double x = 0.412453 * r + 0.357580 * g + 0.180423 * b;
+    const double y = 0.212671 * r + 0.715160 * g + 0.072169 * b;
+    const double z = 0.019334 * r + 0.119193 * g + 0.950227 * b;
+    const double sum = x + y + z;
+    return sum > 0 ? std::array<double, 2>{x / sum, y / sum} : std::array<double, 2>{0, 0};
+}
+
+void write_window_png(const std::string& path, int width, int height) {
+    std::vector<unsigned char> bytes(static_cast<size_t>(width) * height * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    image::FloatImage shot(width, height, 4);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < 4; ++c)  // the window already holds display values: store them unchanged
+                shot.pixel(x, height - 1 - y)[c] = c == 3 ? 1.0f : bytes[(static_cast<size_t>(y) * width + x) * 4 + c] / 255.0f;
+    const auto parent = fs::path(path).parent_path();
+    if (!parent.empty()) fs::create_directories(parent);
+    image::write_image(path, shot, image::Encoding::Linear);
+}
+
+class Viewer {
+public:
+    explicit Viewer(const ViewerOptions& options) : options_(options) {
+        context::ContextOptions context_options;
+        context_options.backend = context::Backend::Glfw;
+        context_options.window_width = options.window_width;
+        context_options.window_height = options.window_height;
+        context_options.window_title = "fxview";
+        context_options.debug_output = options.gl_debug;
+        context_ = context::create_context(context_options);
+        window_ = context_->window();
+        glfwSwapInterval(vsync_ ? 1 : 0);
+        imgui_ = std::make_unique<ImGuiLayer>(window_);
+        display_ = std::make_unique<DisplayPass>();
+        debug_ = std::make_unique<render::DebugRenderer>();
+        scene_ = options.scene;
+        initial_scene_ = options.scene;
+        for (const auto& object : options.scene.objects) objects_.push_back({object, options.technique, ViewMode::Effect, false});
+        if (!options.effect_path.empty()) load_effect(options.effect_path, options.technique, options.sets, options.preset);
+        if (!session_)
+            for (auto& o : objects_) o.view = ViewMode::Normals;
+        for (int i = 0; i < 2; ++i) timer_queries_[i] = gl::create_query(GL_TIME_ELAPSED);
+        script_ = options.script;
+    }
+
+    int run() {
+        auto last_poll = std::chrono::steady_clock::now();
+        auto last_frame = last_poll;
+        while (!glfwWindowShouldClose(window_)) {
+            glfwPollEvents();
+            const auto now = std::chrono::steady_clock::now();
+            frame_seconds_ = std::chrono::duration<double>(now - last_frame).count();
+            last_frame = now;
+            if (session_ && now - last_poll > std::chrono::milliseconds(500)) {  // hot reload
+                last_poll = now;
+                if (const auto error = session_->reload_if_changed()) reload_error_ = *error;
+                else if (session_->files_changed() == false && reload_error_.empty()) {
+                }
+            }
+            run_script_step();
+            frame();
+            ++frame_number_;
+            if (options_.frames > 0 && frame_number_ >= options_.frames && script_position_ >= script_.size()) break;
+        }
+        return exit_code_;
+    }
+
+private:
+    void load_effect(const std::string& path, const std::string& technique, const std::vector<std::string>& sets,
+                     const std::string& preset) {
+        try {
+            auto session = std::make_unique<render::EffectSession>(path, app::effect_load_options(), app::texture_folders());
+            if (!technique.empty()) session->select_technique(technique);
+            if (!preset.empty()) effect::load_preset(preset, session->effect(), session->values());
+            for (const auto& s : sets) effect::set_value_from_text(session->effect(), session->values(), s);
+            if (!session->values().textures.empty()) session->reload_textures();
+            session_ = std::move(session);
+            effect_path_ = path;
+            reload_error_.clear();
+            for (auto& o : objects_) {
+                o.technique = session_->technique();
+                if (o.view != ViewMode::Effect && o.view != ViewMode::Plain) o.view = ViewMode::Effect;
+            }
+        } catch (const std::exception& error) {
+            reload_error_ = error.what();  // the last good effect (if any) stays
+        }
+    }
+
+    // --- rendering -------------------------------------------------------------------------
+    void render_scene(const gl::RenderTarget& target) {
+        target.bind_for_drawing();
+        glClearColor(scene_.background.r, scene_.background.g, scene_.background.b, scene_.background.a);
+        glClearDepth(1.0);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glDepthMask(GL_TRUE);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        for (const auto& o : objects_) {
+            scene::Scene single = scene_;
+            single.objects = {o.object};
+            try {
+                if (o.view == ViewMode::Effect && session_) {
+                    const std::string previous = session_->technique();
+                    if (!o.technique.empty() && o.technique != previous) session_->select_technique(o.technique);
+                    session_->render(single, target, {static_cast<float>(glfwGetTime()), frame_number_}, false);
+                    if (session_->technique() != previous) session_->select_technique(previous);
+                } else {
+                    debug_->render(single, debug_view(o.view == ViewMode::Effect ? ViewMode::Plain : o.view), target, false);
+                }
+            } catch (const std::exception& error) {
+                reload_error_ = error.what();
+            }
+        }
+        target.resolve();
+    }
+
+    void frame() {
+        int window_width = 0, window_height = 0;
+        glfwGetFramebufferSize(window_, &window_width, &window_height);
+        const int width = options_.render_width > 0 ? options_.render_width : std::max(16, view_size_.x);
+        const int height = options_.render_height > 0 ? options_.render_height : std::max(16, view_size_.y);
+        if (!target_ || target_->width() != width || target_->height() != height || target_->multisampled() != (samples_ > 1))
+            target_ = std::make_unique<gl::RenderTarget>(gl::RenderTargetDesc{width, height, 1, samples_});
+        if (!paused_) {
+            const int query = frame_number_ % 2;
+            glBeginQuery(GL_TIME_ELAPSED, timer_queries_[query].get());
+            render_scene(*target_);
+            glEndQuery(GL_TIME_ELAPSED);
+            GLint available = 0;
+            glGetQueryObjectiv(timer_queries_[1 - query].get(), GL_QUERY_RESULT_AVAILABLE, &available);
+            if (available && frame_number_ > 0) {
+                GLuint64 nanoseconds = 0;
+                glGetQueryObjectui64v(timer_queries_[1 - query].get(), GL_QUERY_RESULT, &nanoseconds);
+                gpu_ms_ = nanoseconds / 1e6;
+            }
+            display_->run(target_->color_texture(0), width, height, srgb_display_);
+        }
+        imgui_->begin_frame();
+        draw_ui(window_width, window_height);
+        handle_keys();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, window_width, window_height);
+        glDisable(GL_FRAMEBUFFER_SRGB);
+        glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        imgui_->end_frame();
+        for (const auto& path : pending_window_shots_) write_window_png(path, window_width, window_height);
+        pending_window_shots_.clear();
+        const bool last = options_.frames > 0 && frame_number_ + 1 >= options_.frames && script_position_ >= script_.size();
+        if (last && !options_.screenshot.empty()) write_window_png(options_.screenshot, window_width, window_height);
+        if (last && !options_.render_screenshot.empty()) write_render(options_.render_screenshot);
+        context_->swap_buffers();
+    }
+
+    void write_render(const std::string& path) {
+        const auto parent = fs::path(path).parent_path();
+        if (!parent.empty()) fs::create_directories(parent);
+        image::write_image(path, target_->read_color(0), srgb_display_ ? image::Encoding::Srgb : image::Encoding::Linear);
+    }
+
+    void screenshot_at(const std::string& path, int width, int height) {
+        gl::RenderTarget shot({width, height, 1, samples_});
+        render_scene(shot);
+        const auto parent = fs::path(path).parent_path();
+        if (!parent.empty()) fs::create_directories(parent);
+        image::write_image(path, shot.read_color(0), srgb_display_ ? image::Encoding::Srgb : image::Encoding::Linear);
+        status_ = "saved " + path;
+    }
+
+    void pick_at(int x, int y) {
+        const image::FloatImage image = target_->read_color(0);
+        if (x < 0 || y < 0 || x >= image.width || y >= image.height) return;
+        pick_.info = image::inspect_pixel(image, x, y, srgb_display_ ? image::Encoding::Srgb : image::Encoding::Linear);
+        pick_.xy = chromaticity_of(pick_.info.rgba);
+        pick_.valid = true;
+    }
+
+    // --- input -----------------------------------------------------------------------------
+    glm::quat& target_rotation() {
+        if (selected_ == Target::Camera) return scene_.camera.pose.rotation;
+        if (selected_ == Target::Light) return scene_.light.pose.rotation;
+        return objects_[static_cast<size_t>(selected_object_)].object.pose.rotation;
+    }
+
+    void rotate_selected(const glm::quat& view_rotation) {
+        if (selected_ == Target::Camera) {
+            scene_.camera.pose.rotation = glm::normalize(view_rotation * scene_.camera.pose.rotation);
+        } else if (selected_ == Target::Light) {
+            scene_.light.pose.rotation = math::rotate_in_view(scene_.light.pose.rotation, view_rotation, scene_.camera.pose.rotation);
+        } else if (!objects_.empty()) {
+            auto& selected = objects_[static_cast<size_t>(selected_object_)];
+            const bool group = selected.grouped;
+            for (auto& o : objects_)
+                if (&o == &selected || (group && o.grouped))
+                    o.object.pose.rotation = math::rotate_in_view(o.object.pose.rotation, view_rotation, scene_.camera.pose.rotation);
+        }
+    }
+
+    void reset_selected() {
+        if (selected_ == Target::Camera) scene_.camera = initial_scene_.camera;
+        else if (selected_ == Target::Light) scene_.light = initial_scene_.light;
+        else if (!objects_.empty()) {
+            auto& o = objects_[static_cast<size_t>(selected_object_)].object;
+            o.pose = {};
+            o.scale = glm::vec3(1.0f);
+        }
+    }
+
+    void handle_render_view_mouse(const ImVec2& origin, const ImVec2& size) {
+        ImGuiIO& io = ImGui::GetIO();
+        if (!ImGui::IsItemHovered() && !dragging_) return;
+        const auto to_ndc = [&](ImVec2 p) {
+            return glm::vec2((p.x - origin.x) / size.x * 2.0f - 1.0f, 1.0f - (p.y - origin.y) / size.y * 2.0f);
+        };
+        if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+            dragging_ = true;
+            drag_moved_ = false;
+            drag_last_ = to_ndc(io.MousePos);
+        }
+        if (dragging_ && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+            const glm::vec2 now = to_ndc(io.MousePos);
+            if (glm::length(now - drag_last_) > 1e-4f) {
+                rotate_selected(math::arcball_rotation(drag_last_, now));
+                drag_last_ = now;
+                drag_moved_ = true;
+            }
+        }
+        if (dragging_ && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
+            dragging_ = false;
+            if (!drag_moved_) {  // a click without a drag picks the pixel under the cursor
+                const float u = (io.MousePos.x - origin.x) / size.x, v = (io.MousePos.y - origin.y) / size.y;
+                pick_at(static_cast<int>(u * target_->width()), static_cast<int>(v * target_->height()));
+            }
+        }
+        if (ImGui::IsItemHovered() && ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {  // move in the view plane
+            const ImVec2 delta = io.MouseDelta;
+            const float scale = scene_.camera.pose.distance / size.y * 1.2f;
+            const glm::vec3 view_move(delta.x * scale, -delta.y * scale, 0.0f);
+            const glm::vec3 world_move = glm::inverse(glm::mat3_cast(scene_.camera.pose.rotation)) * view_move;
+            if (selected_ == Target::Camera) scene_.camera.pose.pan -= glm::vec2(view_move);
+            else if (selected_ == Target::Light) scene_.light.pose.position += glm::vec3(glm::mat3_cast(glm::inverse(scene_.light.pose.rotation)) * world_move);
+            else if (!objects_.empty()) {
+                auto& selected = objects_[static_cast<size_t>(selected_object_)];
+                for (auto& o : objects_)
+                    if (&o == &selected || (selected.grouped && o.grouped)) o.object.pose.position += world_move;
+            }
+        }
+        if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f)  // camera Z translation = zoom
+            scene_.camera.pose.distance = std::clamp(scene_.camera.pose.distance * std::pow(0.9f, io.MouseWheel), 0.1f, 100.0f);
+    }
+
+    void handle_keys() {
+        if (ImGui::GetIO().WantCaptureKeyboard) return;
+        const bool shift = ImGui::GetIO().KeyShift;
+        if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space))) paused_ = !paused_;
+        const auto pressed = [](int key) { return ImGui::IsKeyPressed(key); };
+        if (pressed(GLFW_KEY_C)) selected_ = Target::Camera;
+        if (pressed(GLFW_KEY_L)) selected_ = Target::Light;
+        if (pressed(GLFW_KEY_O) && !objects_.empty()) selected_ = Target::Object;
+        if (pressed(GLFW_KEY_TAB) && !objects_.empty()) {
+            selected_ = Target::Object;
+            selected_object_ = (selected_object_ + 1) % static_cast<int>(objects_.size());
+        }
+        if (pressed(GLFW_KEY_R)) {
+            if (shift) {
+                scene_.camera = initial_scene_.camera;
+                scene_.light = initial_scene_.light;
+                for (auto& o : objects_) o.object.pose = {}, o.object.scale = glm::vec3(1.0f);
+            } else {
+                reset_selected();
+            }
+        }
+        if (pressed(GLFW_KEY_V)) {
+            vsync_ = !vsync_;
+            glfwSwapInterval(vsync_ ? 1 : 0);
+        }
+        if (pressed(GLFW_KEY_G)) srgb_display_ = !srgb_display_;
+        if (pressed(GLFW_KEY_H) || pressed(GLFW_KEY_F1)) show_help_ = !show_help_;
+        if (pressed(GLFW_KEY_F11)) toggle_fullscreen();
+    }
+
+    void toggle_fullscreen() {
+        GLFWmonitor* monitor = glfwGetWindowMonitor(window_);
+        if (monitor) {
+            glfwSetWindowMonitor(window_, nullptr, windowed_pos_.x, windowed_pos_.y, windowed_size_.x, windowed_size_.y, 0);
+            return;
+        }
+        GLFWmonitor* primary = glfwGetPrimaryMonitor();
+        if (!primary) return;
+        glfwGetWindowPos(window_, &windowed_pos_.x, &windowed_pos_.y);
+        glfwGetWindowSize(window_, &windowed_size_.x, &windowed_size_.y);
+        const GLFWvidmode* mode = glfwGetVideoMode(primary);
+        glfwSetWindowMonitor(window_, primary, 0, 0, mode->width, mode->height, mode->refreshRate);
+    }
+
+    // --- panels ----------------------------------------------------------------------------
+    void draw_ui(int window_width, int window_height) {
+        const float panel_width = std::min(420.0f, window_width * 0.4f);
+        ImGui::SetNextWindowPos(ImVec2(0, 0));
+        ImGui::SetNextWindowSize(ImVec2(panel_width, static_cast<float>(window_height)));
+        ImGui::Begin("fxview", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+        ImGui::Text("%.1f FPS  frame %.2f ms  GPU %.2f ms%s", frame_seconds_ > 0 ? 1.0 / frame_seconds_ : 0.0,
+                    frame_seconds_ * 1e3, gpu_ms_, paused_ ? "  (paused)" : "");
+        if (ImGui::BeginTabBar("tabs")) {
+            if (ImGui::BeginTabItem("Effect")) {
+                draw_effect_tab();
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem("Scene")) {
+                draw_scene_tab();
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem("Textures")) {
+                draw_texture_tab();
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem("Pick")) {
+                draw_pick_tab();
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem("View")) {
+                draw_view_tab();
+                ImGui::EndTabItem();
+            }
+            ImGui::EndTabBar();
+        }
+        if (!status_.empty()) ImGui::TextDisabled("%s", status_.c_str());
+        ImGui::End();
+
+        ImGui::SetNextWindowPos(ImVec2(panel_width, 0));
+        ImGui::SetNextWindowSize(ImVec2(window_width - panel_width, static_cast<float>(window_height)));
+        ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+        ImGui::Begin("Render", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                            ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar);
+        const ImVec2 available = ImGui::GetContentRegionAvail();
+        view_size_ = glm::ivec2(static_cast<int>(available.x), static_cast<int>(available.y));
+        // A fixed render size is shown scaled to fit, keeping its aspect.
+        ImVec2 shown = available;
+        if (target_) {
+            const float scale = std::min(available.x / target_->width(), available.y / target_->height());
+            shown = ImVec2(target_->width() * scale, target_->height() * scale);
+        }
+        const ImVec2 origin = ImGui::GetCursorScreenPos();
+        if (display_->texture())
+            ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(display_->texture())), shown, ImVec2(0, 1), ImVec2(1, 0));
+        else
+            ImGui::Dummy(shown);
+        handle_render_view_mouse(origin, shown);
+        if (!reload_error_.empty()) {  // compile errors overlay; the last good effect keeps rendering
+            ImGui::SetCursorScreenPos(ImVec2(origin.x + 8, origin.y + 8));
+            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+            ImGui::TextWrapped("%s", reload_error_.c_str());
+            ImGui::PopStyleColor();
+        }
+        ImGui::End();
+        ImGui::PopStyleVar();
+        if (show_help_) draw_help();
+    }
+
+    void draw_effect_tab() {
+        ImGui::TextWrapped("Effect: %s", effect_path_.empty() ? "(none: built-in views)" : effect_path_.c_str());
+        if (ImGui::Button("Open...")) {
+            browser_files_.clear();
+            for (const auto& root : {fs::path(FXVIEW_SOURCE_EFFECTS_DIR), fs::current_path()}) {
+                std::error_code error;
+                for (auto it = fs::recursive_directory_iterator(root, error); !error && it != fs::recursive_directory_iterator(); it.increment(error))
+                    if (it->path().extension() == ".fx") browser_files_.push_back(it->path().string());
+            }
+            std::sort(browser_files_.begin(), browser_files_.end());
+            browser_files_.erase(std::unique(browser_files_.begin(), browser_files_.end()), browser_files_.end());
+            ImGui::OpenPopup("Open effect");
+        }
+        if (ImGui::BeginPopup("Open effect")) {
+            static_assert(sizeof(path_input_) > 1);
+            ImGui::InputText("path", path_input_, sizeof path_input_);
+            if (ImGui::Button("Load path")) load_effect(path_input_, "", {}, ""), ImGui::CloseCurrentPopup();
+            ImGui::Separator();
+            for (const auto& file : browser_files_)
+                if (ImGui::Selectable(file.c_str())) {
+                    load_effect(file, "", {}, "");
+                    ImGui::CloseCurrentPopup();
+                }
+            ImGui::EndPopup();
+        }
+        if (!session_) return;
+        ImGui::SameLine();
+        if (ImGui::Button("Reload")) {
+            if (const auto error = session_->reload()) reload_error_ = *error;
+            else reload_error_.clear();
+        }
+        if (!objects_.empty()) {
+            auto& object = objects_[static_cast<size_t>(selected_object_)];
+            if (ImGui::BeginCombo("technique", object.technique.c_str())) {
+                for (const auto& t : session_->effect().techniques)
+                    if (ImGui::Selectable(t.name.c_str(), t.name == object.technique)) {
+                        for (auto& o : objects_)
+                            if (&o == &object || ImGui::GetIO().KeyShift) o.technique = t.name;
+                    }
+                ImGui::EndCombo();
+            }
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("Technique of the selected object (Shift: all objects)");
+        }
+        ImGui::InputText("preset", preset_input_, sizeof preset_input_);
+        if (ImGui::Button("Save preset")) {
+            try {
+                effect::save_preset(preset_input_, session_->effect(), session_->technique(), session_->values());
+                status_ = std::string("saved ") + preset_input_;
+            } catch (const std::exception& e) {
+                status_ = e.what();
+            }
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Load preset")) {
+            try {
+                effect::load_preset(preset_input_, session_->effect(), session_->values());
+                session_->reload_textures();
+                status_ = std::string("loaded ") + preset_input_;
+            } catch (const std::exception& e) {
+                status_ = e.what();
+            }
+        }
+        ImGui::Separator();
+        draw_parameter_panel(*session_);
+    }
+
+    void draw_scene_tab() {
+        ImGui::TextUnformatted("Turn with the left mouse button, move with the right, zoom with the wheel.");
+        const char* targets[] = {"Camera", "Light", "Object"};
+        int selected = static_cast<int>(selected_);
+        if (ImGui::Combo("drag moves", &selected, targets, 3)) selected_ = static_cast<Target>(selected);
+        ImGui::DragFloat("camera distance", &scene_.camera.pose.distance, 0.02f, 0.1f, 100.0f);
+        ImGui::DragFloat2("camera pan", &scene_.camera.pose.pan.x, 0.01f);
+        ImGui::SliderFloat("field of view", &scene_.camera.fov_y_degrees, 5.0f, 120.0f);
+        ImGui::DragFloat3("light position", &scene_.light.pose.position.x, 0.05f);
+        ImGui::ColorEdit4("background", &scene_.background.r, ImGuiColorEditFlags_Float);
+        ImGui::Separator();
+        if (ImGui::Button("Add")) {
+            objects_.push_back({scene::SceneObject{}, session_ ? session_->technique() : "", session_ ? ViewMode::Effect : ViewMode::Normals, false});
+            selected_object_ = static_cast<int>(objects_.size()) - 1;
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Duplicate") && !objects_.empty()) {
+            ObjectState copy = objects_[static_cast<size_t>(selected_object_)];
+            copy.object.pose.position.x += 0.5f;
+            objects_.push_back(copy);
+            selected_object_ = static_cast<int>(objects_.size()) - 1;
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Remove") && objects_.size() > 1) {
+            objects_.erase(objects_.begin() + selected_object_);
+            selected_object_ = std::min(selected_object_, static_cast<int>(objects_.size()) - 1);
+        }
+        for (int i = 0; i < static_cast<int>(objects_.size()); ++i) {
+            ImGui::PushID(i);
+            ImGui::Checkbox("##group", &objects_[static_cast<size_t>(i)].grouped);
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("In the group: turned and moved together");
+            ImGui::SameLine();
+            const std::string label = std::to_string(i) + ": " + objects_[static_cast<size_t>(i)].object.mesh;
+            if (ImGui::Selectable(label.c_str(), i == selected_object_)) {
+                selected_object_ = i;
+                selected_ = Target::Object;
+            }
+            ImGui::PopID();
+        }
+        if (objects_.empty()) return;
+        auto& o = objects_[static_cast<size_t>(selected_object_)];
+        ImGui::Separator();
+        if (ImGui::BeginCombo("mesh", o.object.mesh.c_str())) {
+            for (const auto& name : scene::builtin_mesh_names())
+                if (ImGui::Selectable(name.c_str(), name == o.object.mesh)) o.object.mesh = name;
+            ImGui::EndCombo();
+        }
+        ImGui::InputText("OBJ file", obj_input_, sizeof obj_input_);
+        ImGui::SameLine();
+        if (ImGui::Button("Use")) {
+            try {
+                scene::load_mesh(obj_input_);  // check before the renderer meets it
+                o.object.mesh = obj_input_;
+            } catch (const std::exception& e) {
+                status_ = e.what();
+            }
+        }
+        int view = static_cast<int>(o.view);
+        if (ImGui::Combo("view", &view, kViewNames, 6)) o.view = static_cast<ViewMode>(view);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("effect, plain rendering (no effect) or a debug view");
+        ImGui::DragFloat3("position", &o.object.pose.position.x, 0.01f);
+        glm::vec3 euler = glm::degrees(glm::eulerAngles(o.object.pose.rotation));
+        if (ImGui::DragFloat3("rotation", &euler.x, 0.5f)) o.object.pose.rotation = glm::quat(glm::radians(euler));
+        ImGui::DragFloat3("scale", &o.object.scale.x, 0.01f, 0.01f, 100.0f);
+    }
+
+    void draw_texture_tab() {
+        if (!session_) {
+            ImGui::TextUnformatted("No effect loaded.");
+            return;
+        }
+        for (const auto& [name, texture] : session_->resources().textures()) {
+            ImGui::PushID(name.c_str());
+            ImGui::Text("%s  %dx%d  %s  %s", name.c_str(), texture.width, texture.height, texture::format_name(texture.format),
+                        texture.type == texture::TextureType::Cube ? "cube" : texture.type == texture::TextureType::Tex3D ? "3D" : "");
+            ImGui::TextDisabled("%s", texture.source.c_str());
+            if (texture.type == texture::TextureType::Tex2D) {
+                const float h = std::min(96.0f, 96.0f * texture.height / std::max(1, texture.width) * 4);
+                ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture.texture.get())), ImVec2(96, std::max(8.0f, h)),
+                             ImVec2(0, 1), ImVec2(1, 0));
+            }
+            ImGui::PopID();
+        }
+        ImGui::Separator();
+        std::vector<std::string> samplers;
+        for (const auto& p : session_->effect().parameters)
+            if (effect::is_sampler_type(p.type)) samplers.push_back(p.name);
+        if (samplers.empty()) return;
+        sampler_choice_ = std::min(sampler_choice_, static_cast<int>(samplers.size()) - 1);
+        if (ImGui::BeginCombo("sampler", samplers[static_cast<size_t>(sampler_choice_)].c_str())) {
+            for (int i = 0; i < static_cast<int>(samplers.size()); ++i)
+                if (ImGui::Selectable(samplers[static_cast<size_t>(i)].c_str(), i == sampler_choice_)) sampler_choice_ = i;
+            ImGui::EndCombo();
+        }
+        ImGui::InputText("texture file", texture_input_, sizeof texture_input_);
+        if (ImGui::Button("Assign to sampler")) {
+            const std::string sampler = samplers[static_cast<size_t>(sampler_choice_)];
+            const auto before = session_->values().textures;
+            session_->values().textures[sampler] = texture_input_;
+            try {
+                session_->reload_textures();
+                status_ = "assigned " + std::string(texture_input_) + " to " + sampler;
+            } catch (const std::exception& e) {
+                session_->values().textures = before;  // keep what worked
+                session_->reload_textures();
+                status_ = e.what();
+            }
+        }
+    }
+
+    void draw_pick_tab() {
+        ImGui::TextUnformatted("Click the render view (without dragging) to pick a pixel.");
+        if (!pick_.valid) return;
+        const auto& p = pick_.info;
+        ImGui::Text("pixel      %d, %d", p.x, p.y);
+        ImGui::Text("float RGBA %.6g %.6g %.6g %.6g", p.rgba[0], p.rgba[1], p.rgba[2], p.rgba[3]);
+        ImGui::Text("8-bit      %u %u %u %u (%s)", p.rgba8[0], p.rgba8[1], p.rgba8[2], p.rgba8[3], srgb_display_ ? "sRGB" : "linear");
+        ImGui::Text("packed     %u (0x%08X)", p.packed, p.packed);
+        ImGui::Text("normal     %.4f %.4f %.4f", p.normal.x, p.normal.y, p.normal.z);
+        ImGui::Text("xy         %.4f %.4f", pick_.xy[0], pick_.xy[1]);
+        if (target_ && display_->texture()) {  // magnifier: 15x15 texels around the pick
+            const float w = static_cast<float>(target_->width()), h = static_cast<float>(target_->height());
+            const float radius = 7.5f;
+            const ImVec2 uv0((p.x + 0.5f - radius) / w, 1.0f - (p.y + 0.5f - radius) / h);
+            const ImVec2 uv1((p.x + 0.5f + radius) / w, 1.0f - (p.y + 0.5f + radius) / h);
+            ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(display_->texture())), ImVec2(180, 180), uv0, uv1);
+        }
+    }
+
+    void draw_view_tab() {
+        ImGui::Checkbox("pause rendering (Space)", &paused_);
+        if (ImGui::Checkbox("vsync (V)", &vsync_)) glfwSwapInterval(vsync_ ? 1 : 0);
+        ImGui::Checkbox("sRGB display (G: legacy linear)", &srgb_display_);
+        const char* sample_counts[] = {"off", "2", "4", "8"};
+        int msaa = samples_ == 0 ? 0 : samples_ == 2 ? 1 : samples_ == 4 ? 2 : 3;
+        if (ImGui::Combo("MSAA", &msaa, sample_counts, 4)) samples_ = msaa == 0 ? 0 : 1 << msaa;
+        if (ImGui::Button("Fullscreen (F11)")) toggle_fullscreen();
+        ImGui::Separator();
+        ImGui::InputInt2("screenshot size", &shot_size_.x);
+        shot_size_ = glm::clamp(shot_size_, glm::ivec2(1), glm::ivec2(16384));
+        ImGui::InputText("file (.png/.exr)", shot_input_, sizeof shot_input_);
+        if (ImGui::Button("Save screenshot")) {
+            try {
+                screenshot_at(shot_input_, shot_size_.x, shot_size_.y);
+            } catch (const std::exception& e) {
+                status_ = e.what();
+            }
+        }
+    }
+
+    void draw_help() {
+        ImGui::Begin("Keys", &show_help_, ImGuiWindowFlags_AlwaysAutoResize);
+        ImGui::TextUnformatted(
+            "Mouse (render view)\n"
+            "  left drag      turn the selected camera / light / object (arcball)\n"
+            "  right drag     move it in the view plane (camera: pan)\n"
+            "  wheel          zoom (camera Z translation)\n"
+            "  left click     pick the pixel\n"
+            "Keys\n"
+            "  C / L / O      select camera / light / object\n"
+            "  Tab            next object\n"
+            "  R              reset the selection     Shift+R  reset all\n"
+            "  Space          pause rendering         V        vsync\n"
+            "  G              sRGB / legacy display   F11      fullscreen\n"
+            "  H or F1        this help");
+        ImGui::End();
+    }
+
+    // --- scripts ---------------------------------------------------------------------------
+    void run_script_step() {
+        if (wait_frames_ > 0) {
+            --wait_frames_;
+            return;
+        }
+        while (script_position_ < script_.size() && wait_frames_ == 0) {
+            const ScriptAction& a = script_[script_position_++];
+            try {
+                perform(a);
+            } catch (const std::exception& error) {
+                std::cerr << "fxview: script line " << a.line << ": " << error.what() << "\n";
+                exit_code_ = 1;
+            }
+        }
+    }
+
+    void perform(const ScriptAction& a) {
+        const auto& args = a.arguments;
+        if (a.verb == "set") {
+            if (!session_) throw UsageError("no effect loaded");
+            effect::set_value_from_text(session_->effect(), session_->values(), args[0] + "=" + args[1]);
+            if (!session_->values().textures.empty()) session_->reload_textures();
+        } else if (a.verb == "technique") {
+            if (!session_) throw UsageError("no effect loaded");
+            session_->select_technique(args[0]);  // validates the name
+            for (auto& o : objects_) o.technique = args[0];
+        } else if (a.verb == "view") {
+            for (auto& o : objects_) o.view = parse_view(args[0]);
+        } else if (a.verb == "mesh") {
+            scene::load_mesh(args[0]);
+            objects_[static_cast<size_t>(selected_object_)].object.mesh = args[0];
+        } else if (a.verb == "select") {
+            if (args[0] == "camera") selected_ = Target::Camera;
+            else if (args[0] == "light") selected_ = Target::Light;
+            else if (args[0] == "object") {
+                selected_ = Target::Object;
+                if (args.size() == 2) selected_object_ = std::clamp(std::stoi(args[1]), 0, static_cast<int>(objects_.size()) - 1);
+            } else throw UsageError("select camera, light or object");
+        } else if (a.verb == "rotate") {
+            const Target saved = selected_;
+            selected_ = args[0] == "camera" ? Target::Camera : args[0] == "light" ? Target::Light : Target::Object;
+            rotate_selected(math::rotation_from_euler_degrees({std::stof(args[1]), std::stof(args[2]), std::stof(args[3])}));
+            selected_ = saved;
+        } else if (a.verb == "pick") {
+            render_scene(*target_);
+            pick_at(std::stoi(args[0]), std::stoi(args[1]));
+            if (!pick_.valid) throw UsageError("pick outside the render view");
+            const auto& p = pick_.info;
+            std::cout << nlohmann::json{{"x", p.x}, {"y", p.y}, {"width", target_->width()}, {"height", target_->height()},
+                                        {"rgba", p.rgba}, {"rgba8", p.rgba8}, {"packed", p.packed},
+                                        {"normal", {p.normal.x, p.normal.y, p.normal.z}}, {"xy", pick_.xy}}
+                             .dump()
+                      << std::endl;
+        } else if (a.verb == "screenshot") {
+            pending_window_shots_.push_back(args[0]);
+            wait_frames_ = 1;
+        } else if (a.verb == "render-screenshot") {
+            render_scene(*target_);
+            write_render(args[0]);
+        } else if (a.verb == "frames") {
+            wait_frames_ = std::max(0, std::stoi(args[0]));
+        }
+    }
+
+    ViewerOptions options_;
+    std::unique_ptr<context::Context> context_;
+    GLFWwindow* window_ = nullptr;
+    std::unique_ptr<ImGuiLayer> imgui_;
+    std::unique_ptr<DisplayPass> display_;
+    std::unique_ptr<render::DebugRenderer> debug_;
+    std::unique_ptr<render::EffectSession> session_;
+    std::unique_ptr<gl::RenderTarget> target_;
+    gl::Query timer_queries_[2];
+    scene::Scene scene_, initial_scene_;
+    std::vector<ObjectState> objects_;
+    std::string effect_path_, reload_error_, status_;
+    Target selected_ = Target::Object;
+    int selected_object_ = 0;
+    bool dragging_ = false, drag_moved_ = false;
+    glm::vec2 drag_last_{0.0f};
+    glm::ivec2 view_size_{640, 480}, windowed_pos_{0}, windowed_size_{1280, 800}, shot_size_{1920, 1080};
+    bool paused_ = false, vsync_ = true, srgb_display_ = true, show_help_ = false;
+    int samples_ = 0, sampler_choice_ = 0, frame_number_ = 0, exit_code_ = 0;
+    double frame_seconds_ = 0, gpu_ms_ = 0;
+    Pick pick_;
+    std::vector<std::string> browser_files_, pending_window_shots_;
+    char path_input_[512] = "effects/debug.fx", preset_input_[512] = "preset.json", obj_input_[512] = "model.obj",
+         texture_input_[512] = "textures/checker.png", shot_input_[512] = "out/screenshot.png";
+    std::vector<ScriptAction> script_;
+    size_t script_position_ = 0;
+    int wait_frames_ = 0;
+};
+
+}  // namespace
+
+int run_viewer(const ViewerOptions& options) {
+    Viewer viewer(options);
+    return viewer.run();
+}
+
+}  // namespace fxview::ui

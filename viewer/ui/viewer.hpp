@@ -1,0 +1,36 @@
+// The interactive viewer (`fxview view`): a GLFW window with Dear ImGui panels around a render
+// view. Objects, camera and light are placed independently and turned with an arcball; each object
+// has its own technique and view mode (the effect, plain rendering, or a debug view); parameters
+// are edited in place; the effect hot-reloads and a failing reload keeps the last good one.
+#pragma once
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/debug_renderer.hpp"
+#include "render/effect_session.hpp"
+#include "scene/scene.hpp"
+#include "ui/script.hpp"
+
+namespace fxview::ui {
+
+struct ViewerOptions {
+    std::string effect_path;  // may be empty: debug views only
+    std::string technique;
+    std::vector<std::string> sets;
+    std::string preset;
+    scene::Scene scene;
+    int window_width = 1280, window_height = 800;
+    int render_width = 0, render_height = 0;  // 0: follow the render view's size
+    int frames = 0;                           // > 0: exit after this many frames (after the script)
+    std::string screenshot;                   // whole window at exit
+    std::string render_screenshot;            // render view at exit
+    std::vector<ScriptAction> script;
+    bool gl_debug = false;
+};
+
+// Runs until the window closes (or the frame count is reached); returns the exit code.
+int run_viewer(const ViewerOptions& options);
+
+}  // namespace fxview::ui
