@@ -16,33 +16,11 @@
 
 #include "image/image_file.hpp"
 
+using fxview::test::Result;
+using fxview::test::run;
 using fxview::test::temp_path;
 
 namespace {
-
-struct Result {
-    int exit_code = -1;
-    std::string out, err;
-};
-
-Result run(const std::string& arguments) {
-    const std::string err_file = temp_path("stderr.txt");
-    const std::string command = std::string(FXVIEW_BINARY) + " " + arguments + " 2>" + err_file;
-    Result result;
-    FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    std::array<char, 4096> buffer{};
-    size_t count;
-    while ((count = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.out.append(buffer.data(), count);
-    const int status = pclose(pipe);
-    REQUIRE(WIFEXITED(status));  // a signal (crash) fails here
-    result.exit_code = WEXITSTATUS(status);
-    std::ifstream err(err_file);
-    std::stringstream text;
-    text << err.rdbuf();
-    result.err = text.str();
-    return result;
-}
 
 }  // namespace
 

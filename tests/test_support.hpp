@@ -1,6 +1,13 @@
 // Helpers shared by the test executables: a scratch folder and one GL context per process.
 #pragma once
+#include <doctest/doctest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "context/context.hpp"
@@ -27,6 +34,32 @@ inline context::Context& shared_context() {
         return context::create_context(options);
     }();
     return *context;
+}
+
+// Runs the fxview binary with `arguments` (a shell command line), capturing stdout, stderr and
+// the exit code; a crash (signal) fails the calling test.
+struct Result {
+    int exit_code = -1;
+    std::string out, err;
+};
+
+inline Result run(const std::string& arguments) {
+    const std::string err_file = temp_path("stderr.txt");
+    const std::string command = std::string(FXVIEW_BINARY) + " " + arguments + " 2>" + err_file;
+    Result result;
+    FILE* pipe = popen(command.c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    std::array<char, 4096> buffer{};
+    size_t count;
+    while ((count = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.out.append(buffer.data(), count);
+    const int status = pclose(pipe);
+    REQUIRE(WIFEXITED(status));  // a signal (crash) fails here
+    result.exit_code = WEXITSTATUS(status);
+    std::ifstream err(err_file);
+    std::stringstream text;
+    text << err.rdbuf();
+    result.err = text.str();
+    return result;
 }
 
 }  // namespace fxview::test

@@ -126,11 +126,12 @@ public:
             last_frame = now;
             if (session_ && now - last_poll > std::chrono::milliseconds(500)) {  // hot reload
                 last_poll = now;
-                if (const auto error = session_->reload_if_changed()) reload_error_ = *error;
-                else if (session_->files_changed() == false && reload_error_.empty()) {
+                if (session_->files_changed()) {
+                    const auto error = session_->reload();
+                    reload_error_ = error ? *error : std::string();
                 }
             }
-            run_script_step();
+            if (target_) run_script_step();  // actions need the render view, made by the first frame
             frame();
             ++frame_number_;
             if (options_.frames > 0 && frame_number_ >= options_.frames && script_position_ >= script_.size()) break;
