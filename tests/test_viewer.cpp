@@ -108,3 +108,17 @@ TEST_CASE("broken scripts and options are refused with exit 2") {
     CHECK(r.err.find("bad-script.txt:2: unknown script action 'fly'") != std::string::npos);
     CHECK(run("view " + kDebugFx + " --screenshot x.png").exit_code == 2);  // needs --frames
 }
+
+TEST_CASE("a cube map becomes the skybox behind the objects") {
+    const std::string effect = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/examples/textured.fx";
+    const std::string script = temp_path("sky-script.txt"), plain = temp_path("no-sky.png"), sky = temp_path("sky.png");
+    std::ofstream(script) << "render-screenshot " << plain << "\nskybox SkyTexture\nrender-screenshot " << sky << "\nskybox Nope\n";
+    const Result r = run("view " + effect + " -t Mirror --render-size 96x96 --script " + script + " --frames 2");
+    CHECK(r.exit_code == 1);  // the last line names no cube map: reported, the run goes on
+    CHECK(r.err.find("no cube map texture 'Nope'") != std::string::npos);
+    const auto before = load_png(plain), after = load_png(sky);
+    // A corner shows the background before and the sky after; the sphere's centre stays the mirror.
+    CHECK(texel(before, 1, 1)[2] < 0.1f);
+    CHECK(texel(after, 1, 1)[2] > 0.3f);
+    CHECK(texel(after, 48, 48) == texel(before, 48, 48));
+}

@@ -8,6 +8,7 @@
 //   pick X Y                    prints the pick of render-view pixel (X, Y) as JSON on stdout
 //   screenshot FILE             the whole window, UI included
 //   render-screenshot FILE      the render view at its own resolution
+//   skybox TEXTURE|off          a cube-map texture of the effect as the background
 //   frames N                    lets N frames pass
 #pragma once
 #include <string>

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 
 #include "app/effect_options.hpp"
 #include "context/context.hpp"
@@ -20,6 +21,7 @@
 #include "image/image_file.hpp"
 #include "image/pixel_info.hpp"
 #include "math/arcball.hpp"
+#include "render/skybox.hpp"
 #include "scene/shapes.hpp"
 #include "ui/display_pass.hpp"
 #include "ui/imgui_layer.hpp"
@@ -106,6 +108,7 @@ public:
         imgui_ = std::make_unique<ImGuiLayer>(window_);
         display_ = std::make_unique<DisplayPass>();
         debug_ = std::make_unique<render::DebugRenderer>();
+        skybox_ = std::make_unique<render::Skybox>();
         scene_ = options.scene;
         initial_scene_ = options.scene;
         for (const auto& object : options.scene.objects) objects_.push_back({object, options.technique, ViewMode::Effect, false});
@@ -168,6 +171,7 @@ private:
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glDepthMask(GL_TRUE);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        const render::GpuTexture* sky = skybox_texture();
         for (const auto& o : objects_) {
             scene::Scene single = scene_;
             single.objects = {o.object};
@@ -184,7 +188,32 @@ private:
                 reload_error_ = error.what();
             }
         }
+        if (sky) skybox_->draw(sky->texture.get(), scene_.camera, target);
         target.resolve();
+    }
+
+    const render::GpuTexture* skybox_texture() const {
+        if (!session_ || skybox_name_.empty()) return nullptr;
+        const render::GpuTexture* texture = session_->resources().find(skybox_name_);
+        return texture && texture->type == texture::TextureType::Cube ? texture : nullptr;
+    }
+
+    // 2D views of a cube map's six faces (GL texture views), made once per texture, for the cross.
+    const std::array<gl::Texture, 6>& face_views(const render::GpuTexture& cube) {
+        auto& views = cube_views_[cube.texture.get()];
+        if (!views[0]) {
+            GLint internal = 0;
+            glGetTextureLevelParameteriv(cube.texture.get(), 0, GL_TEXTURE_INTERNAL_FORMAT, &internal);
+            GLint levels = 1;
+            glGetTextureParameteriv(cube.texture.get(), GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+            for (GLuint face = 0; face < 6; ++face) {
+                GLuint name = 0;
+                glGenTextures(1, &name);  // a view needs an unbound, never-bound name
+                glTextureView(name, GL_TEXTURE_2D, cube.texture.get(), static_cast<GLenum>(internal), 0, static_cast<GLuint>(levels), face, 1);
+                views[face] = gl::Texture(name);
+            }
+        }
+        return views;
     }
 
     void frame() {
@@ -576,6 +605,19 @@ private:
                 const float h = std::min(96.0f, 96.0f * texture.height / std::max(1, texture.width) * 4);
                 ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture.texture.get())), ImVec2(96, std::max(8.0f, h)),
                              ImVec2(0, 1), ImVec2(1, 0));
+            } else if (texture.type == texture::TextureType::Cube) {
+                // Shown as a horizontal cross: +Y above, -X +Z +X -Z in the middle row, -Y below.
+                const auto& views = face_views(texture);
+                const float cell = 40.0f;
+                const ImVec2 origin = ImGui::GetCursorScreenPos();
+                const int cells[6][2] = {{2, 1}, {0, 1}, {1, 0}, {1, 2}, {1, 1}, {3, 1}};
+                for (int face = 0; face < 6; ++face) {
+                    ImGui::SetCursorScreenPos(ImVec2(origin.x + cells[face][0] * cell, origin.y + cells[face][1] * cell));
+                    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(views[static_cast<size_t>(face)].get())), ImVec2(cell, cell));
+                }
+                ImGui::SetCursorScreenPos(ImVec2(origin.x, origin.y + 3 * cell + 4));
+                bool sky = skybox_name_ == name;
+                if (ImGui::Checkbox("skybox", &sky)) skybox_name_ = sky ? name : "";
             }
             ImGui::PopID();
         }
@@ -588,6 +630,12 @@ private:
         if (ImGui::BeginCombo("sampler", samplers[static_cast<size_t>(sampler_choice_)].c_str())) {
             for (int i = 0; i < static_cast<int>(samplers.size()); ++i)
                 if (ImGui::Selectable(samplers[static_cast<size_t>(i)].c_str(), i == sampler_choice_)) sampler_choice_ = i;
+            ImGui::EndCombo();
+        }
+        if (ImGui::BeginCombo("loaded file", "pick a loaded texture")) {
+            for (const auto& [name, texture] : session_->resources().textures())
+                if (texture.source.find('/') != std::string::npos && ImGui::Selectable(texture.source.c_str()))
+                    std::snprintf(texture_input_, sizeof texture_input_, "%s", texture.source.c_str());
             ImGui::EndCombo();
         }
         ImGui::InputText("texture file", texture_input_, sizeof texture_input_);
@@ -724,6 +772,9 @@ private:
         } else if (a.verb == "render-screenshot") {
             render_scene(*target_);
             write_render(args[0]);
+        } else if (a.verb == "skybox") {
+            skybox_name_ = args[0] == "off" ? "" : args[0];
+            if (!skybox_name_.empty() && !skybox_texture()) throw UsageError("no cube map texture '" + args[0] + "' in the effect");
         } else if (a.verb == "frames") {
             wait_frames_ = std::max(0, std::stoi(args[0]));
         }
@@ -735,6 +786,9 @@ private:
     std::unique_ptr<ImGuiLayer> imgui_;
     std::unique_ptr<DisplayPass> display_;
     std::unique_ptr<render::DebugRenderer> debug_;
+    std::unique_ptr<render::Skybox> skybox_;
+    std::string skybox_name_;
+    std::map<GLuint, std::array<gl::Texture, 6>> cube_views_;
     std::unique_ptr<render::EffectSession> session_;
     std::unique_ptr<gl::RenderTarget> target_;
     gl::Query timer_queries_[2];
