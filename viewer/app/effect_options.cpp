@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "effect/preset.hpp"
 #include "spectral/library.hpp"
 
 namespace fxview::app {
@@ -29,6 +30,15 @@ effect::LoadOptions effect_load_options() {
     } catch (const std::exception&) {
     }
     return options;
+}
+
+std::unique_ptr<render::EffectSession> open_effect_session(const EffectOptions& options) {
+    auto session = std::make_unique<render::EffectSession>(options.path, effect_load_options(), texture_folders());
+    if (!options.technique.empty()) session->select_technique(options.technique);
+    if (!options.preset.empty()) effect::load_preset(options.preset, session->effect(), session->values());
+    for (const auto& assignment : options.sets) effect::set_value_from_text(session->effect(), session->values(), assignment);
+    if (!session->values().textures.empty()) session->reload_textures();
+    return session;
 }
 
 std::vector<std::string> texture_folders() {

@@ -3,10 +3,12 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "effect/parser.hpp"
+#include "render/effect_session.hpp"
 
 namespace fxview::app {
 
@@ -23,5 +25,9 @@ effect::LoadOptions effect_load_options();
 // Where texture files are searched after the effect's own folder: textures/ of the source tree
 // (or $FXVIEW_TEXTURES_DIR).
 std::vector<std::string> texture_folders();
+
+// Opens the effect of `options` as a session: technique, then preset, then --set values (texture
+// overrides reload the textures). Throws EffectError/UsageError like the steps it takes.
+std::unique_ptr<render::EffectSession> open_effect_session(const EffectOptions& options);
 
 }  // namespace fxview::app

@@ -40,11 +40,10 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
     context_options.debug_output = request.gl_debug;
     const auto gl_context = context::create_context(context_options);
 
-    render::EffectSession session(request.effect.path, effect_load_options(), texture_folders());
-    if (!technique.empty()) session.select_technique(technique);
-    if (!request.effect.preset.empty()) effect::load_preset(request.effect.preset, session.effect(), session.values());
-    for (const auto& assignment : request.effect.sets) effect::set_value_from_text(session.effect(), session.values(), assignment);
-    if (!session.values().textures.empty()) session.reload_textures();
+    EffectOptions effect_options = request.effect;
+    if (!technique.empty()) effect_options.technique = technique;
+    const auto opened = open_effect_session(effect_options);
+    render::EffectSession& session = *opened;
 
     CompareResult result;
     result.technique = session.technique();

@@ -24,15 +24,10 @@ image::FloatImage render_offscreen(const RenderRequest& request) {
         render::DebugRenderer renderer;
         renderer.render(request.scene, request.view, target);
     } else {
-        render::EffectSession session(request.effect.path, effect_load_options(), texture_folders());
-        if (!request.effect.technique.empty()) session.select_technique(request.effect.technique);
-        if (!request.effect.preset.empty()) effect::load_preset(request.effect.preset, session.effect(), session.values());
-        for (const auto& assignment : request.effect.sets)
-            effect::set_value_from_text(session.effect(), session.values(), assignment);
-        if (!session.values().textures.empty()) session.reload_textures();
+        const auto session = open_effect_session(request.effect);
         if (!request.effect.save_preset.empty())
-            effect::save_preset(request.effect.save_preset, session.effect(), session.technique(), session.values());
-        session.render(request.scene, target);
+            effect::save_preset(request.effect.save_preset, session->effect(), session->technique(), session->values());
+        session->render(request.scene, target);
     }
     image::FloatImage image = target.read_color(0);
 

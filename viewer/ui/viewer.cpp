@@ -146,12 +146,12 @@ private:
     void load_effect(const std::string& path, const std::string& technique, const std::vector<std::string>& sets,
                      const std::string& preset) {
         try {
-            auto session = std::make_unique<render::EffectSession>(path, app::effect_load_options(), app::texture_folders());
-            if (!technique.empty()) session->select_technique(technique);
-            if (!preset.empty()) effect::load_preset(preset, session->effect(), session->values());
-            for (const auto& s : sets) effect::set_value_from_text(session->effect(), session->values(), s);
-            if (!session->values().textures.empty()) session->reload_textures();
-            session_ = std::move(session);
+            app::EffectOptions effect_options;
+            effect_options.path = path;
+            effect_options.technique = technique;
+            effect_options.sets = sets;
+            effect_options.preset = preset;
+            session_ = app::open_effect_session(effect_options);
             effect_path_ = path;
             reload_error_.clear();
             for (auto& o : objects_) {
