@@ -11,35 +11,41 @@ vec3 map_vector(vec3 v) { return normalize(v) * 0.5 + 0.5; }  // eq. 55
 
 GLSLShader NormalsFS {
     #include "fragment_inputs.glsl"
+    #include "capture.glsl"
     layout(location = 0) out vec4 out_color;
-    void main() { out_color = vec4(map_vector(fs_in.normal), 1.0); }
+    void main() { out_color = vec4(map_vector(fs_in.normal), 1.0); fx_capture(); }
 }
 
 GLSLShader TexCoordsFS {
     #include "fragment_inputs.glsl"
+    #include "capture.glsl"
     layout(location = 0) out vec4 out_color;
-    void main() { out_color = vec4(fs_in.uv, 0.0, 1.0); }
+    void main() { out_color = vec4(fs_in.uv, 0.0, 1.0); fx_capture(); }
 }
 
 GLSLShader VectorToCameraFS {
     #include "fragment_inputs.glsl"
+    #include "capture.glsl"
     layout(location = 0) out vec4 out_color;
-    void main() { out_color = vec4(map_vector(CameraPosition - fs_in.world_position), 1.0); }
+    void main() { out_color = vec4(map_vector(CameraPosition - fs_in.world_position), 1.0); fx_capture(); }
 }
 
 GLSLShader VectorToLightFS {
     #include "fragment_inputs.glsl"
+    #include "capture.glsl"
     layout(location = 0) out vec4 out_color;
-    void main() { out_color = vec4(map_vector(LightPosition - fs_in.world_position), 1.0); }
+    void main() { out_color = vec4(map_vector(LightPosition - fs_in.world_position), 1.0); fx_capture(); }
 }
 
 GLSLShader PlainFS {
     #include "fragment_inputs.glsl"
+    #include "capture.glsl"
     layout(location = 0) out vec4 out_color;
     void main() {
         vec3 n = normalize(fs_in.normal);
         vec3 l = normalize(LightPosition - fs_in.world_position);
         out_color = vec4(PlainColor * (Ambient + (1.0 - Ambient) * max(dot(n, l), 0.0)), 1.0);
+        fx_capture();
     }
 }
 

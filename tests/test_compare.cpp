@@ -53,8 +53,23 @@ TEST_CASE("a wrong parameter on the CPU side only makes the comparison fail") {
 
 TEST_CASE("a technique without a reference is reported, never skipped") {
     app::RenderRequest request = sphere_request();
-    request.effect.path = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/debug.fx";
-    const app::CompareResult r = app::compare_technique(request, "Plain", {});
+    request.effect.path = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/examples/textured.fx";
+    const app::CompareResult r = app::compare_technique(request, "CheckerLambert", {});
     CHECK(!r.has_reference);
     CHECK(!r.pass);
+}
+
+TEST_CASE("the debug views and Plain match their CPU references") {
+    app::RenderRequest request = sphere_request();
+    request.effect.path = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/debug.fx";
+    request.scene.objects.front().mesh = "torus";
+    request.scene.objects.front().pose.rotation = glm::angleAxis(0.6f, glm::normalize(glm::vec3(1, 1, 0)));
+    for (const auto& technique : app::technique_names(request.effect.path)) {
+        CAPTURE(technique);
+        const app::CompareResult r = app::compare_technique(request, technique, {});
+        CHECK(r.has_reference);
+        CHECK(r.pass);
+    }
+    const app::CompareResult wrong = app::compare_technique(request, "Plain", {"Ambient=0.5"});
+    CHECK(!wrong.pass);
 }

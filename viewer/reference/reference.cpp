@@ -3,6 +3,7 @@
 #include <map>
 
 #include "core/error.hpp"
+#include "reference/debug_reference.hpp"
 #include "reference/spectral_reference.hpp"
 
 namespace fxview::reference {
@@ -24,6 +25,7 @@ const Reference* find_reference(const std::string& effect_stem, const std::strin
     static const std::map<std::string, Reference> references = [] {
         std::map<std::string, Reference> all;
         for (auto& [name, reference] : spectral_references()) all.emplace("wavelength/" + name, std::move(reference));
+        for (auto& [name, reference] : debug_references()) all.emplace("debug/" + name, std::move(reference));
         return all;
     }();
     const auto found = references.find(effect_stem + "/" + technique);
