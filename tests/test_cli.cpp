@@ -262,3 +262,17 @@ TEST_CASE("compare --json: pass with error figures, exit 1 for a CPU-only change
     CHECK(nlohmann::json::parse(none.out)["reference"] == false);
     CHECK(run("compare --size 32x32").exit_code == 2);  // no effect
 }
+
+TEST_CASE("bench prints one JSON line per technique with positive frame times") {
+    const Result r = run(std::string("bench ") + FXVIEW_SOURCE_EFFECTS_DIR + "/debug.fx --size 32x32 --frames 2 --json");
+    REQUIRE(r.exit_code == 0);
+    std::istringstream lines(r.out);
+    int count = 0;
+    for (std::string line; std::getline(lines, line);) {
+        const auto json = nlohmann::json::parse(line);
+        CHECK(json["wall_ms_median"].get<double>() > 0.0);
+        ++count;
+    }
+    CHECK(count == 5);
+    CHECK(run("bench --size 32x32").exit_code == 2);  // needs an effect
+}

@@ -17,5 +17,6 @@ CommandRunner add_list_command(CLI::App& app);
 CommandRunner add_check_command(CLI::App& app);
 CommandRunner add_spectra_command(CLI::App& app);
 CommandRunner add_compare_command(CLI::App& app);
+CommandRunner add_bench_command(CLI::App& app);
 
 }  // namespace fxview::app

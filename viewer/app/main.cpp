@@ -23,9 +23,10 @@ int main(int argc, char** argv) {
         {"spectra", app::add_spectra_command(app)},
         {"compare", app::add_compare_command(app)},
         {"view", ui::add_view_command(app)},
+        {"bench", app::add_bench_command(app)},
     };
     if (argc > 1 && argv[1][0] != '-' && !runners.contains(argv[1])) {
-        std::cerr << "fxview: unknown command '" << argv[1] << "' (expected view, render, pick, info, list, check, spectra or compare)\n";
+        std::cerr << "fxview: unknown command '" << argv[1] << "' (expected view, render, pick, info, list, check, spectra, compare or bench)\n";
         return 2;
     }
     try {

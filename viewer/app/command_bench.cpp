@@ -1,0 +1,90 @@
+// `fxview bench`: frame times of an effect's techniques, printed as a table to compare with the
+// thesis' FPS tables. Each frame is timed on the wall clock up to glFinish (the honest figure on
+// every driver) and with a GL_TIME_ELAPSED query (meaningful on GPUs; on llvmpipe it only covers
+// command submission, because rasterisation runs later in its threads).
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include "app/commands.hpp"
+#include "app/gpu_cpu_compare.hpp"
+#include "app/scene_options.hpp"
+#include "context/context.hpp"
+#include "core/error.hpp"
+#include "gl/render_target.hpp"
+
+namespace fxview::app {
+
+namespace {
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values.empty() ? 0.0 : values[values.size() / 2];
+}
+
+}  // namespace
+
+CommandRunner add_bench_command(CLI::App& app) {
+    struct Options {
+        SceneOptions scene;
+        int frames = 10;
+        bool json = false;
+    };
+    auto o = std::make_shared<Options>();
+    o->scene.size = "1024x768";
+    CLI::App* command = app.add_subcommand("bench", "Measure frame times of an effect's techniques (GPU timer queries)");
+    add_scene_options(*command, o->scene);
+    command->add_option("--frames", o->frames, "Measured frames per technique (after 2 warm-up frames)")->check(CLI::Range(1, 10000));
+    command->add_flag("--json", o->json, "Print one JSON object per technique");
+    return [o] {
+        const RenderRequest request = to_render_request(o->scene);
+        if (request.effect.path.empty()) throw UsageError("bench needs an effect file");
+        context::ContextOptions context_options;
+        context_options.backend = request.backend;
+        context_options.window_width = request.width;
+        context_options.window_height = request.height;
+        context_options.window_visible = false;
+        const auto context = context::create_context(context_options);
+        const auto info = context::query_context_info();
+        const auto session = open_effect_session(request.effect);
+        const std::vector<std::string> techniques =
+            request.effect.technique.empty() ? technique_names(request.effect.path) : std::vector<std::string>{request.effect.technique};
+        gl::RenderTarget target({request.width, request.height, 1, request.samples});
+        gl::Query query = gl::create_query(GL_TIME_ELAPSED);
+        if (!o->json)
+            std::printf("%s, %dx%d, %s\n\n| technique | wall ms (median) | FPS (wall) | GPU timer ms (median) |\n| --- | --- | --- | --- |\n",
+                        info.renderer.c_str(), request.width, request.height, request.effect.path.c_str());
+        for (const auto& technique : techniques) {
+            session->select_technique(technique);
+            std::vector<double> gpu_ms, wall_ms;
+            for (int frame = 0; frame < o->frames + 2; ++frame) {
+                const auto start = std::chrono::steady_clock::now();
+                glBeginQuery(GL_TIME_ELAPSED, query.get());
+                session->render(request.scene, target);
+                glEndQuery(GL_TIME_ELAPSED);
+                glFinish();
+                const auto end = std::chrono::steady_clock::now();
+                GLuint64 nanoseconds = 0;
+                glGetQueryObjectui64v(query.get(), GL_QUERY_RESULT, &nanoseconds);
+                if (frame < 2) continue;  // warm-up: shader compilation, texture residency
+                gpu_ms.push_back(nanoseconds / 1e6);
+                wall_ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+            }
+            const double gpu = median(gpu_ms), wall = median(wall_ms);
+            if (o->json)
+                std::cout << nlohmann::json{{"technique", technique}, {"renderer", info.renderer}, {"width", request.width},
+                                            {"height", request.height}, {"frames", o->frames}, {"gpu_ms_median", gpu},
+                                            {"wall_ms_median", wall}, {"fps_wall", wall > 0 ? 1000.0 / wall : 0.0}}
+                                 .dump()
+                          << "\n";
+            else
+                std::printf("| %s | %.3f | %.2f | %.3f |\n", technique.c_str(), wall, wall > 0 ? 1000.0 / wall : 0.0, gpu);
+        }
+        return 0;
+    };
+}
+
+}  // namespace fxview::app
