@@ -35,7 +35,12 @@ std::string_view debug_view_name(DebugView view) {
 DebugRenderer::DebugRenderer()
     : program_(gl::link_program({{GL_VERTEX_SHADER, std::string(builtin_shaders::debug_vert), "effects/builtin/debug.vert"},
                                  {GL_FRAGMENT_SHADER, std::string(builtin_shaders::debug_frag),
-                                  "effects/builtin/debug.frag"}})) {}
+                                  "effects/builtin/debug.frag"}})) {
+    const GLuint p = program_.get();
+    locations_ = {glGetUniformLocation(p, "u_view_projection"), glGetUniformLocation(p, "u_mode"),
+                  glGetUniformLocation(p, "u_camera_position"), glGetUniformLocation(p, "u_light_position"),
+                  glGetUniformLocation(p, "u_world"),          glGetUniformLocation(p, "u_normal_matrix")};
+}
 
 void DebugRenderer::render(const scene::Scene& scene, DebugView view, const gl::RenderTarget& target, bool clear) {
     target.bind_for_drawing();
@@ -56,17 +61,17 @@ void DebugRenderer::render(const scene::Scene& scene, DebugView view, const gl::
         math::view_matrix(scene.camera.pose);
     const GLuint program = program_.get();
     glUseProgram(program);
-    glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "u_view_projection"), 1, GL_FALSE,
+    glProgramUniformMatrix4fv(program, locations_.view_projection, 1, GL_FALSE,
                               glm::value_ptr(view_projection));
-    glProgramUniform1i(program, glGetUniformLocation(program, "u_mode"), static_cast<int>(view));
-    glProgramUniform3fv(program, glGetUniformLocation(program, "u_camera_position"), 1,
+    glProgramUniform1i(program, locations_.mode, static_cast<int>(view));
+    glProgramUniform3fv(program, locations_.camera_position, 1,
                         glm::value_ptr(math::camera_world_position(scene.camera.pose)));
-    glProgramUniform3fv(program, glGetUniformLocation(program, "u_light_position"), 1,
+    glProgramUniform3fv(program, locations_.light_position, 1,
                         glm::value_ptr(scene.light.world_position()));
     for (const auto& object : scene.objects) {
         const glm::mat4 world = math::world_matrix(object.pose, object.scale);
-        glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "u_world"), 1, GL_FALSE, glm::value_ptr(world));
-        glProgramUniformMatrix3fv(program, glGetUniformLocation(program, "u_normal_matrix"), 1, GL_FALSE,
+        glProgramUniformMatrix4fv(program, locations_.world, 1, GL_FALSE, glm::value_ptr(world));
+        glProgramUniformMatrix3fv(program, locations_.normal_matrix, 1, GL_FALSE,
                                   glm::value_ptr(math::normal_matrix(world)));
         meshes_.get(object.mesh).draw();
     }

@@ -25,6 +25,9 @@ public:
 
 private:
     gl::Program program_;
+    struct Locations {
+        GLint view_projection, mode, camera_position, light_position, world, normal_matrix;
+    } locations_;  // looked up once, not per draw
     MeshCache meshes_;
 };
 
