@@ -8,7 +8,7 @@ packages=(
   libglfw3-dev libimgui-dev libglm-dev libstb-dev libeigen3-dev doctest-dev libcli11-dev
   libtinyobjloader-dev libtinyexr-dev nlohmann-json3-dev
   libegl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6 libosmesa6-dev
-  colord-data xvfb xauth
+  libglx-mesa0 colord-data xvfb xauth
 )
 
 missing=()
@@ -26,4 +26,4 @@ if [[ $(id -u) -ne 0 ]]; then
 fi
 export DEBIAN_FRONTEND=noninteractive
 "${as_root[@]}" apt-get update -qq
-"${as_root[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+"${as_root[@]}" apt-get install -y -qq "${missing[@]}" >/dev/null
