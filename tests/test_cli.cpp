@@ -20,10 +20,6 @@ using fxview::test::Result;
 using fxview::test::run;
 using fxview::test::temp_path;
 
-namespace {
-
-}  // namespace
-
 TEST_CASE("pick --json returns the facing normal at the centre of a sphere") {
     for (const char* backend : {"egl", "osmesa"}) {
         CAPTURE(backend);

@@ -109,9 +109,20 @@ void bind_uniforms(const CompiledPass& pass, const ParameterValues& values, cons
         }
         const GLsizei count = std::max(1, p.array_size);
         if (data.size() < static_cast<size_t>(components * count)) continue;
-        const bool integer = p.type == "int" || p.type.rfind("ivec", 0) == 0 || p.type == "bool" || p.type.rfind("bvec", 0) == 0 ||
-                             p.type == "uint" || p.type.rfind("uvec", 0) == 0;
-        if (integer) {
+        const bool unsigned_type = p.type == "uint" || p.type.rfind("uvec", 0) == 0;
+        const bool integer = p.type == "int" || p.type.rfind("ivec", 0) == 0 || p.type == "bool" || p.type.rfind("bvec", 0) == 0;
+        if (unsigned_type) {
+            std::vector<GLuint> uints;
+            for (float v : data) uints.push_back(static_cast<GLuint>(std::max(0.0f, v)));
+            switch (components) {
+                case 1: glProgramUniform1uiv(program, uniform.location, count, uints.data()); break;
+                case 2: glProgramUniform2uiv(program, uniform.location, count, uints.data()); break;
+                case 3: glProgramUniform3uiv(program, uniform.location, count, uints.data()); break;
+                case 4: glProgramUniform4uiv(program, uniform.location, count, uints.data()); break;
+            }
+            continue;
+        }
+        if (integer) {  // bool uniforms take the integer setters
             std::vector<GLint> ints(data.begin(), data.end());
             switch (components) {
                 case 1: glProgramUniform1iv(program, uniform.location, count, ints.data()); break;

@@ -3,10 +3,15 @@
 #include "standard.glsl"
 
 uniform float Value = 0.25;
+uniform uint One = 1u;    // unsigned and bool parameters take their own GL setters:
+uniform bool Enabled = true;  // a wrong one leaves them 0 and the sums below 0
 
 GLSLShader ConstantFS {
     layout(location = 0) out vec4 out_color;
-    void main() { out_color = vec4(Value, Value, Value, 1.0); }
+    void main() {
+        float v = Enabled ? Value * float(One) : 0.0;
+        out_color = vec4(v, v, v, 1.0);
+    }
 }
 
 technique Additive {
