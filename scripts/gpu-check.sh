@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# The NVIDIA half of issue #2's check, for a session that has the device machine: run it THERE from
+# the repository root, with build/bin/fxview built here and the glvnd .debs of the device README
+# unpacked first. It prints the renderer and compares the EGL render with the llvmpipe one that
+# this script expects beside it (out/gpu-check/llvmpipe.pfm, made here with the same command).
+set -euo pipefail
+out=${OUT:-out}/gpu-check
+mkdir -p "$out"
+fxview=build/bin/fxview
+"$fxview" info --backend egl --json | tee "$out/info.json"
+"$fxview" render --size 64x64 --out "$out/gpu.pfm"
+"$fxview" compare effects/spectral/wavelength.fx --json --heatmap "$out/compare.png" | tee "$out/compare.jsonl" || true
+"$fxview" bench effects/spectral/wavelength.fx --frames 10 | tee "$out/bench.md"
