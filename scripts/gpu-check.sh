@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The NVIDIA half of issue #2's check, for a session that has the device machine: run it THERE from
 # the repository root, with build/bin/fxview built here and the glvnd .debs of the device README
-# unpacked first. It prints the renderer and compares the EGL render with the llvmpipe one that
-# this script expects beside it (out/gpu-check/llvmpipe.pfm, made here with the same command).
+# unpacked first. It records the renderer, the normal view at 64x64 (gpu.pfm: compare it here with
+# `fxview render --size 64x64 --out llvmpipe.pfm`; the issue asks for at most 1/255 difference),
+# the GPU-vs-CPU comparison of the spectral techniques and their frame times.
 set -euo pipefail
 out=${OUT:-out}/gpu-check
 mkdir -p "$out"
