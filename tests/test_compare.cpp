@@ -54,7 +54,7 @@ TEST_CASE("a wrong parameter on the CPU side only makes the comparison fail") {
 TEST_CASE("a technique without a reference is reported, never skipped") {
     app::RenderRequest request = sphere_request();
     request.effect.path = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/examples/textured.fx";
-    const app::CompareResult r = app::compare_technique(request, "CheckerLambert", {});
+    const app::CompareResult r = app::compare_technique(request, "Mirror", {});
     CHECK(!r.has_reference);
     CHECK(!r.pass);
 }
@@ -72,4 +72,16 @@ TEST_CASE("the debug views and Plain match their CPU references") {
     }
     const app::CompareResult wrong = app::compare_technique(request, "Plain", {"Ambient=0.5"});
     CHECK(!wrong.pass);
+}
+
+TEST_CASE("a texture read through the CPU sampler: CheckerLambert matches, a wrong tiling does not") {
+    app::RenderRequest request = sphere_request();
+    request.effect.path = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/examples/textured.fx";
+    request.scene.objects.front().mesh = "torus";
+    const app::CompareResult r = app::compare_technique(request, "CheckerLambert", {});
+    CHECK(r.has_reference);
+    CHECK(r.mismatched_8bit == 0);
+    CHECK(r.pass);
+    MESSAGE("CheckerLambert: max ", r.max_abs_error, " mean ", r.mean_abs_error);
+    CHECK(!app::compare_technique(request, "CheckerLambert", {"Tiling=3"}).pass);
 }

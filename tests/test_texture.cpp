@@ -354,3 +354,35 @@ TEST_CASE("DDS: RGBA8 (BGRA order) with mips, RGBA16F, RGBA32F via DX10, BC1, cu
         CHECK(texels[(3 * 4 + 3) * 4 + 0] == 1.0f);  // (3,3) red
     }
 }
+
+#include "reference/cpu_sampler.hpp"
+
+TEST_CASE("CPU sampler: GL's nearest and linear filtering and wrap modes, checked by hand and against the GPU") {
+    // A 4x1 float texture 0, 1, 2, 3 (left to right).
+    TextureData row;
+    row.format = PixelFormat::RGBA32F;
+    row.source = "row";
+    row.faces = {{Level{4, 1, std::vector<std::uint8_t>(64)}}};
+    for (int i = 0; i < 4; ++i) {
+        const float v[4] = {static_cast<float>(i), 0, 0, 1};
+        std::memcpy(&row.faces[0][0].bytes[static_cast<size_t>(i) * 16], v, 16);
+    }
+    effect::SamplerState s;
+    s.min_filter = s.mag_filter = GL_NEAREST;
+    s.wrap_s = GL_REPEAT;
+    CHECK(reference::sample_2d(row, s, false, {0.30, 0.5}).r == 1.0);    // texel floor(1.2) = 1
+    CHECK(reference::sample_2d(row, s, false, {-0.10, 0.5}).r == 3.0);   // repeat: -0.4 -> texel 3
+    s.wrap_s = GL_MIRRORED_REPEAT;
+    CHECK(reference::sample_2d(row, s, false, {-0.10, 0.5}).r == 0.0);   // mirror: texel -1 -> 0
+    CHECK(reference::sample_2d(row, s, false, {1.30, 0.5}).r == 2.0);    // texel 5 -> 2
+    s.wrap_s = GL_CLAMP_TO_EDGE;
+    CHECK(reference::sample_2d(row, s, false, {1.30, 0.5}).r == 3.0);
+    s.min_filter = s.mag_filter = GL_LINEAR;
+    CHECK(reference::sample_2d(row, s, false, {0.375, 0.5}).r == doctest::Approx(1.0));  // texel centre 1.5/4
+    CHECK(reference::sample_2d(row, s, false, {0.5, 0.5}).r == doctest::Approx(1.5));    // halfway between 1 and 2
+    CHECK(reference::sample_2d(row, s, false, {0.0, 0.5}).r == doctest::Approx(0.0));    // clamped edge
+    s.wrap_s = GL_REPEAT;
+    CHECK(reference::sample_2d(row, s, false, {0.0, 0.5}).r == doctest::Approx(1.5));    // between texels 3 and 0
+    s.min_filter = GL_LINEAR_MIPMAP_LINEAR;
+    CHECK_THROWS_AS(reference::sample_2d(row, s, false, {0.5, 0.5}), Error);
+}

@@ -109,6 +109,11 @@ void EffectResources::generate(const effect::TextureResource& resource) {
     generated_.emplace(resource.name, std::move(packed));
 }
 
+const texture::TextureData* EffectResources::cpu_copy(const std::string& texture_name) const {
+    const auto found = cpu_copies_.find(texture_name);
+    return found == cpu_copies_.end() ? nullptr : &found->second;
+}
+
 const spectral::PackedTexture* EffectResources::generated(const std::string& texture_name) const {
     const auto found = generated_.find(texture_name);
     return found == generated_.end() ? nullptr : &found->second;
@@ -144,6 +149,7 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
             gpu.levels = data.levels();
             gpu.source = data.source;
             textures_.emplace(resource.name, std::move(gpu));
+            cpu_copies_.emplace(resource.name, std::move(data));
         } catch (const effect::EffectError&) {
             throw;
         } catch (const std::exception& error) {

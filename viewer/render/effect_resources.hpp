@@ -37,8 +37,11 @@ public:
     const GpuTexture* find(const std::string& texture_name) const;
     GLuint sampler(const effect::SamplerState& state);
     const std::map<std::string, GpuTexture>& textures() const { return textures_; }
+    const effect::Effect& effect() const { return effect_; }
     // CPU copies of generated textures ("spectral:cmf", "spectral:library"), for CPU references.
     const spectral::PackedTexture* generated(const std::string& texture_name) const;
+    // CPU copies of file textures exactly as uploaded (after format conversion), for CPU references.
+    const texture::TextureData* cpu_copy(const std::string& texture_name) const;
 
 private:
     void generate(const effect::TextureResource& resource);
@@ -46,6 +49,7 @@ private:
     const effect::Effect& effect_;
     std::map<std::string, GpuTexture> textures_;
     std::map<std::string, spectral::PackedTexture> generated_;
+    std::map<std::string, texture::TextureData> cpu_copies_;
     std::map<std::vector<GLenum>, gl::Sampler> samplers_;
 };
 

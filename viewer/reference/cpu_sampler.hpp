@@ -1,0 +1,17 @@
+// Texture sampling on the CPU by OpenGL's rules (GL 4.5 core spec §8.14): nearest and linear
+// filtering on the base level, the wrap modes REPEAT, CLAMP_TO_EDGE and MIRRORED_REPEAT, sRGB
+// decoding before filtering, t = 0 at the image's bottom row (fxview uploads images top row up).
+// References use it to read the same texture data the GPU samples.
+#pragma once
+#include <glm/glm.hpp>
+
+#include "effect/effect.hpp"
+#include "texture/texture_data.hpp"
+
+namespace fxview::reference {
+
+// Samples a 2D texture at `uv`. Mipmapped minification filters are not reproduced (they depend on
+// screen-space derivatives): they throw Error so that a reference never silently differs.
+glm::dvec4 sample_2d(const texture::TextureData& texture, const effect::SamplerState& sampler, bool srgb, glm::dvec2 uv);
+
+}  // namespace fxview::reference
