@@ -35,7 +35,7 @@ namespace {
 const std::string kEffects = FXVIEW_SOURCE_EFFECTS_DIR;
 const std::string kCorpus = FXVIEW_TEST_EFFECTS;
 
-effect::LoadOptions load_options() { return {{kEffects + "/lib"}}; }
+effect::LoadOptions load_options() { return {{kEffects + "/lib"}, {}}; }
 
 // Parses and compiles every technique; returns the first error's text, or "" if all is well.
 std::string first_error(const std::string& path) {

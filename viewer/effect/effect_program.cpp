@@ -112,24 +112,18 @@ void bind_uniforms(const CompiledPass& pass, const ParameterValues& values, cons
         const bool unsigned_type = p.type == "uint" || p.type.rfind("uvec", 0) == 0;
         const bool integer = p.type == "int" || p.type.rfind("ivec", 0) == 0 || p.type == "bool" || p.type.rfind("bvec", 0) == 0;
         if (unsigned_type) {
+            const PFNGLPROGRAMUNIFORM1UIVPROC setters[4] = {glProgramUniform1uiv, glProgramUniform2uiv, glProgramUniform3uiv,
+                                                            glProgramUniform4uiv};
             std::vector<GLuint> uints;
             for (float v : data) uints.push_back(static_cast<GLuint>(std::max(0.0f, v)));
-            switch (components) {
-                case 1: glProgramUniform1uiv(program, uniform.location, count, uints.data()); break;
-                case 2: glProgramUniform2uiv(program, uniform.location, count, uints.data()); break;
-                case 3: glProgramUniform3uiv(program, uniform.location, count, uints.data()); break;
-                case 4: glProgramUniform4uiv(program, uniform.location, count, uints.data()); break;
-            }
+            setters[components - 1](program, uniform.location, count, uints.data());
             continue;
         }
         if (integer) {  // bool uniforms take the integer setters
-            std::vector<GLint> ints(data.begin(), data.end());
-            switch (components) {
-                case 1: glProgramUniform1iv(program, uniform.location, count, ints.data()); break;
-                case 2: glProgramUniform2iv(program, uniform.location, count, ints.data()); break;
-                case 3: glProgramUniform3iv(program, uniform.location, count, ints.data()); break;
-                case 4: glProgramUniform4iv(program, uniform.location, count, ints.data()); break;
-            }
+            const PFNGLPROGRAMUNIFORM1IVPROC setters[4] = {glProgramUniform1iv, glProgramUniform2iv, glProgramUniform3iv,
+                                                           glProgramUniform4iv};
+            const std::vector<GLint> ints(data.begin(), data.end());
+            setters[components - 1](program, uniform.location, count, ints.data());
             continue;
         }
         switch (components) {

@@ -20,9 +20,6 @@ public:
     explicit Lexer(std::string_view text) : text_(text) {}
     Token next();
     Token peek();
-    size_t position() const { return position_; }
-    void seek(size_t position) { position_ = position; }
-    std::string_view text() const { return text_; }
     // Error offset of an unterminated comment or string found while scanning, else npos.
     size_t unterminated = std::string_view::npos;
 

@@ -74,14 +74,6 @@ const std::map<std::string, GLenum> kPolygonModes = {{"fill", GL_FILL}, {"line",
 
 }  // namespace
 
-const std::vector<std::string>& render_state_names() {
-    static const std::vector<std::string> names = {
-        "DepthTestEnable", "DepthMask", "DepthWriteEnable", "DepthFunc", "CullFaceEnable", "CullFace", "CullMode",
-        "BlendEnable", "BlendFunc", "BlendEquation", "ColorMask", "PolygonMode", "Clear", "ClearColor", "ClearDepth",
-        "RenderTarget", "RenderColorTarget0..7", "Draw"};
-    return names;
-}
-
 void set_render_state(RenderStates& s, const std::string& name, const StateValue& value, const SourceLocation& where) {
     const std::string key = to_lower(name);
     if (key == "depthtestenable") {

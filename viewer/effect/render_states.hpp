@@ -41,9 +41,6 @@ struct StateValue {
 void set_render_state(RenderStates& states, const std::string& name, const StateValue& value,
                       const SourceLocation& where);
 
-// The state names the parser accepts (for docs and messages).
-const std::vector<std::string>& render_state_names();
-
 void apply_render_states(const RenderStates& states);
 
 }  // namespace fxview::effect

@@ -10,7 +10,6 @@ namespace {
 
 const std::vector<std::string> kMatrixBases = {"WORLDVIEWPROJECTION", "VIEWPROJECTION", "WORLDVIEW",
                                                "PROJECTION", "WORLD", "VIEW"};
-const std::vector<std::string> kSuffixes = {"INVERSETRANSPOSE", "INVERSE", "TRANSPOSE", ""};
 const std::vector<std::string> kOthers = {"CAMERAPOSITION", "LIGHTPOSITION", "LIGHTDIRECTION", "VIEWPORTPIXELSIZE",
                                           "TIME", "FRAME"};
 
@@ -39,17 +38,6 @@ bool is_known_semantic(const std::string& semantic) {
         if (semantic == other) return true;
     FrameContext identity;
     return matrix_for(semantic, identity).has_value();
-}
-
-const std::vector<std::string>& semantic_names() {
-    static const std::vector<std::string> names = [] {
-        std::vector<std::string> all;
-        for (const auto& base : kMatrixBases)
-            for (const auto& suffix : kSuffixes) all.push_back(base + suffix);
-        all.insert(all.end(), kOthers.begin(), kOthers.end());
-        return all;
-    }();
-    return names;
 }
 
 std::vector<float> semantic_value(const std::string& semantic, const FrameContext& f, int components) {

@@ -19,7 +19,6 @@ struct FrameContext {
 };
 
 bool is_known_semantic(const std::string& semantic);  // upper case
-const std::vector<std::string>& semantic_names();     // for messages and docs (matrix bases listed once)
 
 // The value of a semantic as floats in GL order (column-major matrices); mat3 uniforms take the
 // upper-left 3x3 of a matrix semantic.

@@ -77,7 +77,8 @@ bool draw_value(const effect::Parameter& p, std::vector<double>& value) {
 bool draw_parameter_panel(render::EffectSession& session) {
     const effect::Effect& effect = session.effect();
     effect::ParameterValues& values = session.values();
-    const effect::ParameterValues defaults = effect::default_values(effect);
+    // Defaults are computed only when a reset asks for them, not every frame.
+    const auto default_of = [&effect](const std::string& name) { return effect::default_values(effect).numbers.at(name); };
     std::vector<const effect::Parameter*> shown;
     for (const auto& p : effect.parameters)
         if (p.semantic.empty() && !effect::is_sampler_type(p.type)) shown.push_back(&p);
@@ -86,7 +87,7 @@ bool draw_parameter_panel(render::EffectSession& session) {
     });
     bool changed = false;
     if (ImGui::Button("Reset all")) {
-        values.numbers = defaults.numbers;
+        values.numbers = effect::default_values(effect).numbers;
         changed = true;
     }
     std::string group = "\x01";
@@ -100,7 +101,7 @@ bool draw_parameter_panel(render::EffectSession& session) {
         auto& value = values.numbers[p->name];
         ImGui::PushID(p->name.c_str());
         if (ImGui::SmallButton("R")) {
-            value = defaults.numbers.at(p->name);
+            value = default_of(p->name);
             changed = true;
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Reset %s to its default", p->name.c_str());

@@ -278,12 +278,6 @@ private:
     }
 
     // --- input -----------------------------------------------------------------------------
-    glm::quat& target_rotation() {
-        if (selected_ == Target::Camera) return scene_.camera.pose.rotation;
-        if (selected_ == Target::Light) return scene_.light.pose.rotation;
-        return objects_[static_cast<size_t>(selected_object_)].object.pose.rotation;
-    }
-
     void rotate_selected(const glm::quat& view_rotation) {
         if (selected_ == Target::Camera) {
             scene_.camera.pose.rotation = glm::normalize(view_rotation * scene_.camera.pose.rotation);
