@@ -85,3 +85,48 @@ TEST_CASE("a texture read through the CPU sampler: CheckerLambert matches, a wro
     MESSAGE("CheckerLambert: max ", r.max_abs_error, " mean ", r.mean_abs_error);
     CHECK(!app::compare_technique(request, "CheckerLambert", {"Tiling=3"}).pass);
 }
+
+TEST_CASE("every thin-film technique matches its CPU reference (exact ones: characteristic matrices)") {
+    app::RenderRequest request = sphere_request();
+    request.width = request.height = 96;
+    request.effect.path = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/thinfilm.fx";
+    const auto techniques = app::technique_names(request.effect.path);
+    CHECK(techniques.size() == 9);
+    // Default soap-like film; then thick films on a metal-like substrate seen from the light with a
+    // 16-layer stack, coarse steps and the 10° observer; then a film thinner than its surroundings
+    // (total internal reflection in the stack).
+    for (const auto& variant : std::vector<std::vector<std::string>>{
+             {},
+             {"Thickness=900", "Variation=1500", "Incidence=1", "SubstrateKappa=2", "Layers=16", "Steps=5", "LightSpectrum=F11",
+              "FilmIndex=2.4", "Observer=1", "OutputMode=1"},
+             {"OuterIndex=1.6", "FilmIndex=1.2", "SecondIndex=1.4", "Layers=3", "Steps=7"}}) {
+        request.effect.sets = variant;
+        for (const auto& technique : techniques) {
+            CAPTURE(technique);
+            CAPTURE(variant.size());
+            const app::CompareResult r = app::compare_technique(request, technique, {});
+            CHECK(r.has_reference);
+            CHECK(r.pixels > 3000);  // the sphere covers about 5260 of 9216 pixels
+            CHECK(r.mismatched_8bit == 0);
+            CHECK(r.pass);
+            if (technique != "PathDifference") CHECK(r.pixels_with_slack == 0);
+            MESSAGE(technique, ": max ", r.max_abs_error, " mean ", r.mean_abs_error, " slack pixels ", r.pixels_with_slack);
+        }
+    }
+}
+
+TEST_CASE("a thin-film parameter wrong on the CPU side only makes the comparison fail") {
+    app::RenderRequest request = sphere_request();
+    request.width = request.height = 64;
+    request.effect.path = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/thinfilm.fx";
+    for (const auto& [technique, wrong] : std::vector<std::pair<std::string, std::string>>{
+             {"PathDifference", "Thickness=101"}, {"Fresnel", "SubstrateIndex=1.52"}, {"FresnelExact", "SubstrateKappa=0.05"},
+             {"Bubble", "FilmIndex=1.34"}, {"FabryPerot", "Incidence=1"}, {"MultiLayer", "Layers=5"},
+             {"MultiLayerFaster", "SecondThickness=81"}}) {
+        CAPTURE(technique);
+        CAPTURE(wrong);
+        const app::CompareResult r = app::compare_technique(request, technique, {wrong});
+        CHECK(r.has_reference);
+        CHECK(!r.pass);
+    }
+}

@@ -22,6 +22,8 @@ struct CompareResult {
         std::array<double, 4> gpu{}, cpu{};
     } worst_pixel;
     long mismatched_8bit = 0;  // pixels whose displayed 8-bit value differs by more than one code
+    long exceeding = 0;        // pixels whose error is above the tolerance (plus their slack)
+    long pixels_with_slack = 0;  // pixels at a discontinuity of the technique, allowed a larger error
     double tolerance = 0;
     std::string tolerance_reason;
     bool pass = false;

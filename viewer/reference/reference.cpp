@@ -6,6 +6,7 @@
 #include "reference/debug_reference.hpp"
 #include "reference/example_reference.hpp"
 #include "reference/spectral_reference.hpp"
+#include "reference/thin_film_reference.hpp"
 
 namespace fxview::reference {
 
@@ -26,6 +27,7 @@ const Reference* find_reference(const std::string& effect_stem, const std::strin
     static const std::map<std::string, Reference> references = [] {
         std::map<std::string, Reference> all;
         for (auto& [name, reference] : spectral_references()) all.emplace("wavelength/" + name, std::move(reference));
+        for (auto& [name, reference] : thin_film_references()) all.emplace("thinfilm/" + name, std::move(reference));
         for (auto& [name, reference] : debug_references()) all.emplace("debug/" + name, std::move(reference));
         for (auto& [name, reference] : example_references()) all.emplace("textured/" + name, std::move(reference));
         return all;

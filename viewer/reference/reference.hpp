@@ -37,6 +37,9 @@ struct Reference {
     Shader shade;
     double tolerance = 1e-4;  // largest float difference allowed per channel
     std::string why;          // where the tolerance comes from
+    // Extra error allowed at one pixel where the technique is discontinuous (PathDifference's
+    // frac()): float on the GPU and double here may land on either side of the jump. Empty: none.
+    std::function<double(const ShadingInput&, const ReferenceContext&)> slack;
 };
 
 // The reference for technique `technique` of the effect file named `effect_stem` (file name without

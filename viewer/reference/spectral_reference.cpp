@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "spectral/colorimetry.hpp"
+#include "reference/spectral_integration.hpp"
 
 namespace fxview::reference {
 namespace {
@@ -32,68 +32,18 @@ Lobes lobes(const ShadingInput& in, double power) {
     return lobes;
 }
 
-struct Setup {
-    const spectral::PackedTexture* cmf;
-    const spectral::PackedTexture* spectra;
-    int observer, lower, upper, steps, light, object, mapping;
-    double cmf_unit;  // the GPU reads stored values: 8-bit CMFs are divided by their scale
-    double k, brightness;
-};
-
-Setup setup(const ReferenceContext& c) {
-    Setup s{};
-    const bool bytes = c.number("ByteCmf") != 0.0;
-    s.cmf = &c.generated(bytes ? "CmfBytes" : "CmfFloat");
-    s.spectra = &c.generated("Spectra");
-    s.cmf_unit = 1.0 / s.cmf->scale;
-    s.observer = static_cast<int>(c.number("Observer"));
-    s.lower = static_cast<int>(c.number("Lower"));
-    s.upper = static_cast<int>(c.number("Upper"));
-    s.steps = std::max(1, static_cast<int>(c.number("Steps")));
-    s.k = c.number("K");
-    s.brightness = c.number("Brightness");
-    s.mapping = static_cast<int>(c.number("OutputMode"));
-    s.light = static_cast<int>(c.number("LightSpectrum"));
-    s.object = static_cast<int>(c.number("ObjectSpectrum"));
-    return s;
-}
-
-spectral::GamutMapping mapping(int mode) {
-    return mode == 1 ? spectral::GamutMapping::Desaturate : mode == 2 ? spectral::GamutMapping::Scale : spectral::GamutMapping::Clip;
-}
-
-// Sum over the sampled wavelengths of weight(nm) * cmf(nm), times k and the brightness.
-template <typename Weight>
-spectral::Vec3 integrate(const Setup& s, bool every_nm, Weight weight) {
-    spectral::Vec3 xyz{0, 0, 0};
-    double ybar = 0;
-    for (int nm = s.lower; nm <= s.upper; nm += every_nm ? 1 : s.steps) {
-        const spectral::Vec3 cmf = spectral::cmf_value(*s.cmf, s.observer, nm);
-        const double w = weight(nm);
-        for (int c = 0; c < 3; ++c) xyz[c] += w * cmf[c] * s.cmf_unit;
-        ybar += cmf[1] * s.cmf_unit;
-    }
-    const double k = (s.k > 0 ? s.k : 1.0 / ybar) * s.brightness;
-    for (double& v : xyz) v *= k;
-    return xyz;
-}
-
-std::array<double, 4> to_rgba(const spectral::Vec3& xyz, int mode) {
-    const spectral::Vec3 rgb = spectral::xyz_to_linear_srgb(xyz, mapping(mode));
-    return {rgb[0], rgb[1], rgb[2], 1.0};
-}
-
 // Diffuse (kd * cos) and specular weights with the light and object spectra of the library.
 Reference shaded(int specular_lobe /* 0 none, 1 Phong, 2 Blinn */, bool constant_spectra, bool every_nm) {
     Reference r;
     r.shade = [=](const ShadingInput& in, const ReferenceContext& c) {
-        const Setup s = setup(c);
+        const SpectralSetup s = spectral_setup(c);
+        const int light_index = static_cast<int>(c.number("LightSpectrum")), object_index = static_cast<int>(c.number("ObjectSpectrum"));
         const Lobes lobe = lobes(in, c.number("Power"));
         const double diffuse = c.number("Kd") * lobe.lambert;
         const double specular = specular_lobe == 0 ? 0.0 : c.number("Ks") * (specular_lobe == 1 ? lobe.phong : lobe.blinn);
         const auto xyz = integrate(s, every_nm, [&](int nm) {
-            const double light = constant_spectra ? 1.0 : spectral::packed_value(*s.spectra, s.light, nm);
-            const double object = constant_spectra ? 1.0 : spectral::packed_value(*s.spectra, s.object, nm);
+            const double light = constant_spectra ? 1.0 : spectral::packed_value(*s.spectra, light_index, nm);
+            const double object = constant_spectra ? 1.0 : spectral::packed_value(*s.spectra, object_index, nm);
             return light * (object * diffuse + specular);
         });
         return to_rgba(xyz, s.mapping);
@@ -120,11 +70,12 @@ std::map<std::string, Reference> spectral_references() {
     // Code 11's metal switch: a metal's highlight has the light's colour, a dielectric's the object's.
     Reference phong_metal;
     phong_metal.shade = [](const ShadingInput& in, const ReferenceContext& c) {
-        const Setup s = setup(c);
+        const SpectralSetup s = spectral_setup(c);
+        const int light_index = static_cast<int>(c.number("LightSpectrum")), object_index = static_cast<int>(c.number("ObjectSpectrum"));
         const Lobes lobe = lobes(in, c.number("Power"));
         const double diffuse = c.number("Kd") * lobe.lambert, specular = c.number("Ks") * lobe.phong;
-        const auto light = [&](int nm) { return spectral::packed_value(*s.spectra, s.light, nm); };
-        const auto object = [&](int nm) { return spectral::packed_value(*s.spectra, s.object, nm); };
+        const auto light = [&](int nm) { return spectral::packed_value(*s.spectra, light_index, nm); };
+        const auto object = [&](int nm) { return spectral::packed_value(*s.spectra, object_index, nm); };
         if (c.number("Metal") != 0.0) {
             const auto body = to_rgba(integrate(s, true, [&](int nm) { return light(nm) * object(nm) * diffuse; }), s.mapping);
             const auto highlight = to_rgba(integrate(s, true, [&](int nm) { return light(nm) * specular; }), s.mapping);

@@ -1,0 +1,321 @@
+// Thin-film interference of seed 002 ch. 4.4 (Tables 5-8): the light spectrum times the film's
+// reflectance per wavelength, integrated against the CIE colour matching functions (DOMAIN.md §3).
+// The thesis' models are implemented as documented (PathDifference eq. 62, Fresnel = Code 15,
+// FresnelAlternative eq. 65, Fabry-Pérot eq. 66 with its R); FresnelExact (Airy), Bubble (Sun) and
+// MultiLayer (Hirayama, eq. 67) are exact. Every technique has a CPU reference
+// (viewer/reference/thin_film_reference.cpp); the exact ones are checked against characteristic
+// matrices, an independent method.
+#include "standard.glsl"
+#include "spectral.glsl"
+#include "thin_film.glsl"
+
+uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
+                            string UIHelp = "Index in spectra/library.txt (5 = D65)"; > = 5;
+uniform float Brightness < string UIName = "Brightness"; float UIMin = 0; float UIMax = 8; float UIStep = 0.1; string UIGroup = "Lighting";
+                           string UIHelp = "Scales the reflected light: 1 is physical (a perfect mirror under illuminant E gives Y = 1)"; > = 2.0;
+uniform int Incidence < string UIName = "Angle of incidence from"; string UIWidget = "combo"; string UIItems = "view|light"; string UIGroup = "Lighting";
+                        string UIHelp = "view: light arriving from the mirror direction of the eye (a uniform sky); light: the angle to the point light, as the thesis"; > = 0;
+
+uniform float OuterIndex < string UIName = "Outer medium n0"; float UIMin = 1; float UIMax = 2.5; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 1; > = 1.0;
+uniform float FilmIndex < string UIName = "Film n1"; float UIMin = 1; float UIMax = 3; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 2;
+                          string UIHelp = "1.33: soap/water; 1.38: MgF2; 2.0: the thesis' fig. 26"; > = 1.33;
+uniform float SubstrateIndex < string UIName = "Substrate n2"; float UIMin = 1; float UIMax = 4; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 3; > = 1.5;
+uniform float SubstrateKappa < string UIName = "Substrate κ"; float UIMin = 0; float UIMax = 5; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 4;
+                               string UIHelp = "Extinction coefficient of the substrate, n2 + iκ (exact models only)"; > = 0.0;
+uniform float Thickness < string UIName = "Thickness"; float UIMin = 0; float UIMax = 2000; float UIStep = 1; string UIUnits = "nm"; string UIGroup = "Film"; int UIOrder = 5;
+                          string UIHelp = "Base thickness of the film (layer A in a stack)"; > = 100.0;
+uniform float Variation < string UIName = "Variation"; float UIMin = 0; float UIMax = 2000; float UIStep = 1; string UIUnits = "nm"; string UIGroup = "Film"; int UIOrder = 6;
+                          string UIHelp = "Height of the inverted paraboloid in texture coordinates added to the base (fig. 27)"; > = 300.0;
+
+uniform int Layers < string UIName = "Layers"; int UIMin = 1; int UIMax = 16; string UIGroup = "Stack"; int UIOrder = 1;
+                     string UIHelp = "Films on the substrate, alternating A (n1, varying thickness) and B from the top"; > = 4;
+uniform float SecondIndex < string UIName = "Layer B n"; float UIMin = 1; float UIMax = 3; float UIStep = 0.01; string UIGroup = "Stack"; int UIOrder = 2; > = 2.0;
+uniform float SecondThickness < string UIName = "Layer B thickness"; float UIMin = 0; float UIMax = 2000; float UIStep = 1; string UIUnits = "nm";
+                                string UIGroup = "Stack"; int UIOrder = 3; > = 80.0;
+
+struct Film {
+    float cos_light, cos_view;
+    float cos0;       // cos θ0 in the outer medium, by Incidence
+    float thickness;  // nm, at this fragment
+};
+
+Film film_at(vec3 position, vec3 normal, vec2 uv) {
+    vec3 n = normalize(normal);
+    Film f;
+    f.cos_light = clamp(dot(n, normalize(LightPosition - position)), 0.0, 1.0);
+    f.cos_view = clamp(dot(n, normalize(CameraPosition - position)), 0.0, 1.0);
+    f.cos0 = Incidence == 1 ? f.cos_light : f.cos_view;
+    vec2 centred = 2.0 * uv - 1.0;
+    f.thickness = Thickness + Variation * max(1.0 - dot(centred, centred), 0.0);
+    return f;
+}
+
+// One wavelength's reflected light, weighted by the CMFs; ybar_sum collects k's denominator.
+void add_sample(inout vec3 xyz, inout float ybar_sum, int nm, float reflectance) {
+    vec3 cmf = cmf_at(nm);
+    xyz += spectrum_at(LightSpectrum, nm) * reflectance * cmf;
+    ybar_sum += cmf.y;
+}
+
+vec4 film_colour(vec3 xyz, float ybar_sum) { return vec4(xyz_to_srgb(xyz * normalisation(ybar_sum) * Brightness), 1.0); }
+
+// Eq. 62 / Code 13: the light angle refracted into the film, the eye's cosine squeezed to 0.9..1.
+GLSLShader PathDifferenceFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
+        float cos_beta = refracted_cos(OuterIndex, FilmIndex, f.cos_light);
+        float cos_eye = f.cos_view * 0.1 + 0.9;
+        vec3 xyz = vec3(0.0);
+        float ybar_sum = 0.0;
+        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1))
+            add_sample(xyz, ybar_sum, nm, fract(2.0 * f.thickness * FilmIndex * cos_beta * cos_eye / float(nm)));
+        color = film_colour(xyz, ybar_sum);
+        fx_capture();
+    }
+}
+
+// The thesis' models assume light enters the film: past the film's critical angle (cos1 = 0, only
+// when n1 < n0) their formulas divide 0 by 0, and the Fresnel-based ones return 1, total reflection
+// (viewer/optics/thesis_models.hpp).
+
+// Code 15 as printed: every angle and coefficient recomputed for each wavelength.
+float durikovic(float cos0, float thickness, float nm) {
+    float cos1 = refracted_cos(OuterIndex, FilmIndex, cos0);
+    if (cos1 <= 0.0) return 1.0;  // past the film's critical angle: outside the model, total reflection
+    float cos2 = refracted_cos(OuterIndex, SubstrateIndex, cos0);
+    float gamma = kTwoPi / nm * (2.0 * FilmIndex * thickness * cos1);
+    float cgamma = cos(gamma);
+    vec2 r10 = fresnel_combined(cos1, cos0, FilmIndex, OuterIndex);
+    vec2 r12 = fresnel_combined(cos1, cos2, FilmIndex, SubstrateIndex);
+    vec2 result = (r10 + r12 * cgamma) / (1.0 + r12 * r10 * cgamma);
+    return 0.5 * dot(result, result);
+}
+
+GLSLShader FresnelFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
+        vec3 xyz = vec3(0.0);
+        float ybar_sum = 0.0;
+        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1))
+            add_sample(xyz, ybar_sum, nm, durikovic(f.cos0, f.thickness, float(nm)));
+        color = film_colour(xyz, ybar_sum);
+        fx_capture();
+    }
+}
+
+// Code 15 with the wavelength-independent coefficients and products moved out of the loop.
+GLSLShader FresnelFasterFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
+        float cos1 = refracted_cos(OuterIndex, FilmIndex, f.cos0);
+        float cos2 = refracted_cos(OuterIndex, SubstrateIndex, f.cos0);
+        vec2 r10 = fresnel_combined(cos1, f.cos0, FilmIndex, OuterIndex);
+        vec2 r12 = fresnel_combined(cos1, cos2, FilmIndex, SubstrateIndex);
+        vec2 r12r10 = r12 * r10;
+        float path = kTwoPi * 2.0 * FilmIndex * f.thickness * cos1;
+        vec3 xyz = vec3(0.0);
+        float ybar_sum = 0.0;
+        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+            float cgamma = cos(path / float(nm));
+            vec2 result = (r10 + r12 * cgamma) / (1.0 + r12r10 * cgamma);
+            add_sample(xyz, ybar_sum, nm, cos1 > 0.0 ? 0.5 * dot(result, result) : 1.0);
+        }
+        color = film_colour(xyz, ybar_sum);
+        fx_capture();
+    }
+}
+
+// Eq. 64/65: phase from the path in the film minus the path outside, t = |1 - r|.
+GLSLShader FresnelAlternativeFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
+        float cos1 = refracted_cos(OuterIndex, FilmIndex, f.cos0);
+        float cos2 = refracted_cos(OuterIndex, SubstrateIndex, f.cos0);
+        float sin0 = sqrt(max(1.0 - f.cos0 * f.cos0, 0.0));
+        float tan1 = sqrt(max(1.0 - cos1 * cos1, 0.0)) / cos1;
+        float path = kTwoPi * (2.0 * f.thickness * FilmIndex / cos1 - 2.0 * f.thickness * OuterIndex * tan1 * sin0);
+        vec2 r01 = fresnel_combined(f.cos0, cos1, OuterIndex, FilmIndex);
+        vec2 r10 = fresnel_combined(cos1, f.cos0, FilmIndex, OuterIndex);
+        vec2 r12 = fresnel_combined(cos1, cos2, FilmIndex, SubstrateIndex);
+        vec2 t01 = abs(1.0 - r01), t10 = abs(1.0 - r10);
+        vec2 trt = t01 * r12 * t10, trrrt = t01 * r12 * r10 * r12 * t10;
+        vec3 xyz = vec3(0.0);
+        float ybar_sum = 0.0;
+        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+            float delta = path / float(nm);
+            vec2 sine = trt * sin(delta) + trrrt * sin(2.0 * delta);
+            vec2 cosine = r01 * cos(delta) + trrrt * cos(2.0 * delta);
+            add_sample(xyz, ybar_sum, nm, cos1 > 0.0 ? 0.5 * (dot(sine, sine) + dot(cosine, cosine)) : 1.0);
+        }
+        color = film_colour(xyz, ybar_sum);
+        fx_capture();
+    }
+}
+
+// Airy's sum for one film on a substrate n2 + iκ, per polarisation, in complex form (one step of
+// eq. 67): exact, also past the critical angle and on metals.
+GLSLShader FresnelExactFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
+        vec2 n1 = vec2(FilmIndex, 0.0), n2 = vec2(SubstrateIndex, SubstrateKappa);
+        vec2 cos1 = refracted_cos_c(OuterIndex, n1, f.cos0), cos2 = refracted_cos_c(OuterIndex, n2, f.cos0);
+        Amplitude r01 = fresnel_c(vec2(OuterIndex, 0.0), vec2(f.cos0, 0.0), n1, cos1);
+        Amplitude r12 = fresnel_c(n1, cos1, n2, cos2);
+        vec2 path = kTwoPi * f.thickness * c_mul(n1, cos1);
+        vec3 xyz = vec3(0.0);
+        float ybar_sum = 0.0;
+        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+            vec2 s = hirayama_step(r01.s, r12.s, path / float(nm));
+            vec2 p = hirayama_step(r01.p, r12.p, path / float(nm));
+            add_sample(xyz, ybar_sum, nm, 0.5 * (dot(s, s) + dot(p, p)));
+        }
+        color = film_colour(xyz, ybar_sum);
+        fx_capture();
+    }
+}
+
+// Eq. 48/49 (Sun): a free film in the outer medium, R = 2r²(1 - cos δ)/(1 + r⁴ - 2r² cos δ), evaluated
+// as 4r² sin²(δ/2) / ((1 - r²)² + 4r² sin²(δ/2)): the same value without float cancellation near
+// grazing incidence, where r² -> 1 and cos δ -> 1 (the printed form loses everything there).
+GLSLShader BubbleFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
+        float cos1 = refracted_cos(OuterIndex, FilmIndex, f.cos0);
+        vec2 r = fresnel_combined(f.cos0, cos1, OuterIndex, FilmIndex);
+        vec2 r2 = r * r;
+        vec2 one_minus_r2_squared = (1.0 - r2) * (1.0 - r2);
+        float half_path = 0.5 * kTwoPi * 2.0 * FilmIndex * f.thickness * cos1;
+        vec3 xyz = vec3(0.0);
+        float ybar_sum = 0.0;
+        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+            float s = sin(half_path / float(nm));
+            vec2 numerator = 4.0 * r2 * s * s, denominator = one_minus_r2_squared + numerator;
+            // r² = 1 and sin = 0 together only at grazing incidence, where everything is reflected.
+            vec2 reflectance = mix(vec2(1.0), numerator / denominator, greaterThan(denominator, vec2(0.0)));
+            add_sample(xyz, ybar_sum, nm, 0.5 * (reflectance.x + reflectance.y));
+        }
+        color = film_colour(xyz, ybar_sum);
+        fx_capture();
+    }
+}
+
+// Eq. 66 with the thesis' R = ½(|r∥| + |r⊥|): reflected = 1 - T of an etalon of the film.
+GLSLShader FabryPerotFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
+        float cos1 = refracted_cos(OuterIndex, FilmIndex, f.cos0);
+        vec2 r = abs(fresnel_combined(f.cos0, cos1, OuterIndex, FilmIndex));
+        float mirror = 0.5 * (r.x + r.y);
+        float finesse = 4.0 * mirror / ((1.0 - mirror) * (1.0 - mirror));
+        float half_path = 0.5 * kTwoPi * 2.0 * FilmIndex * f.thickness * cos1;
+        vec3 xyz = vec3(0.0);
+        float ybar_sum = 0.0;
+        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+            float s = sin(half_path / float(nm));
+            add_sample(xyz, ybar_sum, nm, cos1 > 0.0 ? 1.0 - 1.0 / (1.0 + finesse * s * s) : 1.0);
+        }
+        color = film_colour(xyz, ybar_sum);
+        fx_capture();
+    }
+}
+
+// The stack: layer j (1 = top) is A (FilmIndex, the fragment's thickness) for odd j, else B.
+vec2 layer_index(int j) { return vec2(j % 2 == 1 ? FilmIndex : SecondIndex, 0.0); }
+float layer_thickness(int j, float thickness_a) { return j % 2 == 1 ? thickness_a : SecondThickness; }
+
+// Eq. 67 as the thesis ran it: every layer's angle and coefficients recomputed for each wavelength.
+float multilayer(float cos0, float thickness_a, float nm) {
+    int count = clamp(Layers, 1, 16);
+    vec2 substrate = vec2(SubstrateIndex, SubstrateKappa);
+    vec2 n_last = layer_index(count), cos_last = refracted_cos_c(OuterIndex, n_last, cos0);
+    Amplitude gamma = fresnel_c(n_last, cos_last, substrate, refracted_cos_c(OuterIndex, substrate, cos0));
+    for (int j = count; j >= 1; --j) {
+        vec2 n = layer_index(j), cos_j = refracted_cos_c(OuterIndex, n, cos0);
+        vec2 n_above = j == 1 ? vec2(OuterIndex, 0.0) : layer_index(j - 1);
+        vec2 cos_above = j == 1 ? vec2(cos0, 0.0) : refracted_cos_c(OuterIndex, n_above, cos0);
+        Amplitude r = fresnel_c(n_above, cos_above, n, cos_j);
+        vec2 phase = kTwoPi / nm * layer_thickness(j, thickness_a) * c_mul(n, cos_j);
+        gamma.s = hirayama_step(r.s, gamma.s, phase);
+        gamma.p = hirayama_step(r.p, gamma.p, phase);
+    }
+    return 0.5 * (dot(gamma.s, gamma.s) + dot(gamma.p, gamma.p));
+}
+
+GLSLShader MultiLayerFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
+        vec3 xyz = vec3(0.0);
+        float ybar_sum = 0.0;
+        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1))
+            add_sample(xyz, ybar_sum, nm, multilayer(f.cos0, f.thickness, float(nm)));
+        color = film_colour(xyz, ybar_sum);
+        fx_capture();
+    }
+}
+
+// The same stack with every coefficient precomputed: only A and B alternate, so four interfaces
+// (top, A->B, B->A, bottom) and two phase paths serve all wavelengths.
+GLSLShader MultiLayerFasterFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
+        int count = clamp(Layers, 1, 16);
+        vec2 n0 = vec2(OuterIndex, 0.0), na = layer_index(1), nb = layer_index(2), ns = vec2(SubstrateIndex, SubstrateKappa);
+        vec2 cos0 = vec2(f.cos0, 0.0), cos_a = refracted_cos_c(OuterIndex, na, f.cos0), cos_b = refracted_cos_c(OuterIndex, nb, f.cos0);
+        vec2 cos_s = refracted_cos_c(OuterIndex, ns, f.cos0);
+        Amplitude top = fresnel_c(n0, cos0, na, cos_a), a_to_b = fresnel_c(na, cos_a, nb, cos_b), b_to_a = fresnel_c(nb, cos_b, na, cos_a);
+        Amplitude bottom = count % 2 == 1 ? fresnel_c(na, cos_a, ns, cos_s) : fresnel_c(nb, cos_b, ns, cos_s);
+        vec2 path_a = kTwoPi * f.thickness * c_mul(na, cos_a), path_b = kTwoPi * SecondThickness * c_mul(nb, cos_b);
+        vec3 xyz = vec3(0.0);
+        float ybar_sum = 0.0;
+        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+            float inverse_nm = 1.0 / float(nm);
+            Amplitude gamma = bottom;
+            for (int j = count; j >= 1; --j) {
+                Amplitude r = j == 1 ? top : (j % 2 == 1 ? b_to_a : a_to_b);
+                vec2 phase = (j % 2 == 1 ? path_a : path_b) * inverse_nm;
+                gamma.s = hirayama_step(r.s, gamma.s, phase);
+                gamma.p = hirayama_step(r.p, gamma.p, phase);
+            }
+            add_sample(xyz, ybar_sum, nm, 0.5 * (dot(gamma.s, gamma.s) + dot(gamma.p, gamma.p)));
+        }
+        color = film_colour(xyz, ybar_sum);
+        fx_capture();
+    }
+}
+
+technique PathDifference { pass p0 { VertexShader = StandardVS; FragmentShader = PathDifferenceFS; } }
+technique Fresnel { pass p0 { VertexShader = StandardVS; FragmentShader = FresnelFS; } }
+technique FresnelFaster { pass p0 { VertexShader = StandardVS; FragmentShader = FresnelFasterFS; } }
+technique FresnelAlternative { pass p0 { VertexShader = StandardVS; FragmentShader = FresnelAlternativeFS; } }
+technique FresnelExact { pass p0 { VertexShader = StandardVS; FragmentShader = FresnelExactFS; } }
+technique Bubble { pass p0 { VertexShader = StandardVS; FragmentShader = BubbleFS; } }
+technique FabryPerot { pass p0 { VertexShader = StandardVS; FragmentShader = FabryPerotFS; } }
+technique MultiLayer { pass p0 { VertexShader = StandardVS; FragmentShader = MultiLayerFS; } }
+technique MultiLayerFaster { pass p0 { VertexShader = StandardVS; FragmentShader = MultiLayerFasterFS; } }

@@ -1,0 +1,161 @@
+// Thin-film optics against textbook closed forms that nobody here derived: normal-incidence and
+// Brewster reflectance, total internal reflection, the metal formula, quarter-wave AR coatings and
+// Bragg mirrors (Hecht, Optics, ch. 4 and 9; Macleod, Thin-Film Optical Filters, ch. 2-4), energy
+// conservation, and two independent exact methods (Airy's sum, characteristic matrices) agreeing.
+// Every tolerance here is about double rounding (1e-12) unless a comment says otherwise.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "optics/thesis_models.hpp"
+#include "optics/thin_film.hpp"
+
+using namespace fxview::optics;
+
+namespace {
+
+constexpr double kExact = 1e-12;  // a handful of double operations on values of order 1
+
+double degrees_to_cos(double degrees) { return std::cos(degrees * std::numbers::pi / 180.0); }
+
+Stack single_film(double n0, double n1, double n2, double d) { return Stack{n0, {Layer{n1, d}}, n2}; }
+
+}  // namespace
+
+TEST_CASE("a bare interface: normal incidence, Brewster's angle, total internal reflection") {
+    // Hecht eq. 4.67: R = ((n - 1)/(n + 1))² = 0.04 for glass of n = 1.5.
+    CHECK(interface_reflectance(1.0, 1.5, 1.0) == doctest::Approx(0.04).epsilon(kExact));
+    CHECK(transfer_matrix_reflectance(Stack{1.0, {}, 1.5}, 550.0, 1.0) == doctest::Approx(0.04).epsilon(kExact));
+
+    // At Brewster's angle tan θB = n the parallel reflectance vanishes and R⊥ = ((n² − 1)/(n² + 1))².
+    const double cos_brewster = std::cos(std::atan(1.5));
+    const Complex cos_t = refracted_cos(1.0, 1.5, cos_brewster);
+    CHECK(std::norm(fresnel(1.0, 1.5, cos_brewster, cos_t, Polarisation::P).r) < 1e-28);
+    CHECK(std::norm(fresnel(1.0, 1.5, cos_brewster, cos_t, Polarisation::S).r) ==
+          doctest::Approx(std::pow(1.25 / 3.25, 2)).epsilon(kExact));
+
+    // Glass to air beyond the critical angle (41.8°): everything is reflected, in both polarisations.
+    const double cos60 = degrees_to_cos(60.0);
+    for (const Polarisation p : {Polarisation::S, Polarisation::P})
+        CHECK(transfer_matrix(Stack{1.5, {}, 1.0}, 550.0, cos60, p).reflectance == doctest::Approx(1.0).epsilon(kExact));
+}
+
+TEST_CASE("a metal at normal incidence: R = ((n − 1)² + κ²) / ((n + 1)² + κ²)") {
+    for (const auto& [n, kappa] : {std::pair{0.2, 3.0}, std::pair{0.47, 2.4}, std::pair{1.5, 0.0}}) {
+        const double expected = ((n - 1) * (n - 1) + kappa * kappa) / ((n + 1) * (n + 1) + kappa * kappa);
+        CHECK(interface_reflectance(1.0, Complex(n, kappa), 1.0) == doctest::Approx(expected).epsilon(kExact));
+        CHECK(transfer_matrix_reflectance(Stack{1.0, {}, Complex(n, kappa)}, 600.0, 1.0) ==
+              doctest::Approx(expected).epsilon(kExact));
+    }
+}
+
+TEST_CASE("quarter- and half-wave layers at their design wavelength") {
+    const double lambda0 = 550.0, glass = 1.52;
+    // Quarter-wave layer: R = ((n0 ns − n1²)/(n0 ns + n1²))²; MgF2 (1.38) on crown glass gives the
+    // textbook 1.26 % (Hecht 9.9), and n1 = √ns makes a perfect anti-reflection coating.
+    const double mgf2 = 1.38;
+    const double expected = std::pow((glass - mgf2 * mgf2) / (glass + mgf2 * mgf2), 2);
+    CHECK(expected == doctest::Approx(0.0126).epsilon(0.01));  // the 1.26 % as printed (3 digits)
+    CHECK(transfer_matrix_reflectance(single_film(1.0, mgf2, glass, lambda0 / (4 * mgf2)), lambda0, 1.0) ==
+          doctest::Approx(expected).epsilon(kExact));
+    CHECK(transfer_matrix_reflectance(single_film(1.0, std::sqrt(glass), glass, lambda0 / (4 * std::sqrt(glass))), lambda0, 1.0) <
+          1e-24);
+    // A half-wave layer is "absent" (Macleod 2.4): the bare substrate's reflectance, for any n1.
+    for (const double n1 : {1.38, 2.3})
+        CHECK(transfer_matrix_reflectance(single_film(1.0, n1, glass, lambda0 / (2 * n1)), lambda0, 1.0) ==
+              doctest::Approx(interface_reflectance(1.0, glass, 1.0)).epsilon(kExact));
+}
+
+TEST_CASE("a quarter-wave Bragg mirror (HL)^N H reaches the closed-form peak reflectance") {
+    // Macleod 5.2 / Hecht eq. 9.107: with an H layer on top of N (HL) pairs, Y = (nH/nL)^(2N) nH²/ns
+    // and R = ((n0 − Y)/(n0 + Y))² at λ0.
+    const double lambda0 = 600.0, n_high = 2.35, n_low = 1.38, substrate = 1.52;
+    for (const int pairs : {1, 3, 7}) {
+        Stack stack{1.0, {}, substrate};
+        for (int i = 0; i < pairs; ++i) {
+            stack.layers.push_back({n_high, lambda0 / (4 * n_high)});
+            stack.layers.push_back({n_low, lambda0 / (4 * n_low)});
+        }
+        stack.layers.push_back({n_high, lambda0 / (4 * n_high)});
+        const double y = std::pow(n_high / n_low, 2 * pairs) * n_high * n_high / substrate;
+        CAPTURE(pairs);
+        CHECK(transfer_matrix_reflectance(stack, lambda0, 1.0) == doctest::Approx(std::pow((1 - y) / (1 + y), 2)).epsilon(1e-11));
+    }
+}
+
+TEST_CASE("lossless stacks conserve energy, at any angle and polarisation") {
+    Stack stack{1.0, {{2.1, 137.0}, {1.46, 212.0}, {1.9, 55.0}}, 1.52};
+    for (const double degrees : {0.0, 30.0, 65.0, 85.0})
+        for (const Polarisation p : {Polarisation::S, Polarisation::P})
+            for (const double lambda : {380.0, 512.0, 777.0}) {
+                const Response r = transfer_matrix(stack, lambda, degrees_to_cos(degrees), p);
+                CHECK(r.reflectance + r.transmittance == doctest::Approx(1.0).epsilon(kExact));
+            }
+}
+
+TEST_CASE("a thick absorbing layer reflects like the bulk material (the sign of κ is the decaying one)") {
+    // Gold-like n̂ = 0.3 + 2.9i: the field decays as exp(−4πκd/λ) = 1e-40 after 2 µm at 550 nm.
+    const Complex metal(0.3, 2.9);
+    const Stack thick{1.0, {{metal, 2000.0}}, 1.52};
+    for (const double degrees : {0.0, 45.0, 80.0})
+        CHECK(transfer_matrix_reflectance(thick, 550.0, degrees_to_cos(degrees)) ==
+              doctest::Approx(interface_reflectance(1.0, metal, degrees_to_cos(degrees))).epsilon(kExact));
+}
+
+TEST_CASE("Airy's sum (eq. 47) and the characteristic matrices agree for one film") {
+    for (const double degrees : {0.0, 25.0, 60.0, 80.0})
+        for (const double d : {0.0, 90.0, 333.0, 1200.0})
+            for (const double lambda : {380.0, 550.0, 830.0}) {
+                const double cos0 = degrees_to_cos(degrees);
+                for (const Polarisation p : {Polarisation::S, Polarisation::P})
+                    CHECK(airy_reflectance(1.0, 1.33, 1.5, d, lambda, cos0, p) ==
+                          doctest::Approx(transfer_matrix(single_film(1.0, 1.33, 1.5, d), lambda, cos0, p).reflectance)
+                              .epsilon(kExact));
+                // A film of higher index than the substrate (the thesis' n = 1.0 / 2.0 / 1.5, fig. 26).
+                CHECK(airy_reflectance(1.0, 2.0, 1.5, d, lambda, cos0) ==
+                      doctest::Approx(transfer_matrix_reflectance(single_film(1.0, 2.0, 1.5, d), lambda, cos0)).epsilon(kExact));
+            }
+}
+
+TEST_CASE("a soap film (Sun, eq. 48/49) is black when thin and matches a free film's matrices") {
+    for (const double d : {0.0, 1.0, 150.0, 420.0})
+        for (const double degrees : {0.0, 50.0}) {
+            const double cos0 = degrees_to_cos(degrees);
+            CHECK(bubble_reflectance(1.0, 1.33, d, 500.0, cos0) ==
+                  doctest::Approx(transfer_matrix_reflectance(single_film(1.0, 1.33, 1.0, d), 500.0, cos0)).epsilon(kExact));
+        }
+    // The "black film" of a bursting bubble: for d → 0 reflectance vanishes like d² (here 1 nm: < 1e-3).
+    CHECK(bubble_reflectance(1.0, 1.33, 0.0, 500.0, 1.0) == 0.0);
+    CHECK(bubble_reflectance(1.0, 1.33, 1.0, 500.0, 1.0) < 1e-3);
+}
+
+TEST_CASE("the thesis' approximate models evaluate their documented formulas") {
+    // Values of the printed formulas for n = 1.0 / 1.33 / 1.5 at normal incidence, worked out by hand
+    // (python3) from eq. 62, Code 15, eq. 65 and eq. 66; 1e-9 covers the 10 digits kept.
+    // Eq. 62: 2 · 136 nm · 2.0 · 1 · 1 / 500 nm = 1.088 cycles.
+    const thesis::PathDifference path = thesis::path_difference(1.0, 2.0, 136.0, 500.0, 1.0, 1.0);
+    CHECK(path.cycles == doctest::Approx(1.088).epsilon(kExact));
+    CHECK(path.intensity == doctest::Approx(0.088).epsilon(1e-9));
+    CHECK(thesis::durikovic(1.0, 1.33, 1.5, 0.0, 500.0, 1.0) == doctest::Approx(0.006766721994).epsilon(1e-9));
+    CHECK(thesis::alternative(1.0, 1.33, 1.5, 0.0, 500.0, 1.0) == doctest::Approx(0.01991769948).epsilon(1e-9));
+    CHECK(thesis::fabry_perot(1.0, 1.33, 100.0, 500.0, 1.0) == doctest::Approx(0.4321908952).epsilon(1e-9));
+
+    // What the approximations cost: with no film at all the exact answer is the bare 1.0/1.5
+    // interface (R = 0.04); Code 15 gives 0.0068 and eq. 65 0.0199 (DOMAIN.md §3).
+    CHECK(airy_reflectance(1.0, 1.33, 1.5, 0.0, 500.0, 1.0) == doctest::Approx(0.04).epsilon(kExact));
+    CHECK(std::abs(thesis::durikovic(1.0, 1.33, 1.5, 0.0, 500.0, 1.0) - 0.04) > 0.03);
+    // Fabry-Pérot with the thesis' R: transmission is complete (nothing reflected) where Δ = 2πm,
+    // as for the exact free film.
+    const double full_wave = 500.0 / (2 * 1.33);
+    CHECK(thesis::fabry_perot(1.0, 1.33, full_wave, 500.0, 1.0) < 1e-20);
+    CHECK(bubble_reflectance(1.0, 1.33, full_wave, 500.0, 1.0) < 1e-20);
+}
+
+TEST_CASE("grazing incidence reflects everything") {
+    // The limit θ0 → 90° of every Fresnel coefficient is −1; the matrices must not divide by cos θ0 = 0.
+    const Stack stack{1.0, {{1.33, 300.0}, {2.0, 80.0}}, Complex(0.3, 2.9)};
+    for (const Polarisation p : {Polarisation::S, Polarisation::P})
+        CHECK(transfer_matrix(stack, 500.0, 0.0, p).reflectance == 1.0);
+    CHECK(transfer_matrix_reflectance(stack, 500.0, 1e-7) == doctest::Approx(1.0).epsilon(1e-5));
+}

@@ -1,0 +1,30 @@
+#include "optics/fresnel.hpp"
+
+namespace fxview::optics {
+
+Complex refracted_cos(Complex n_i, Complex n_t, Complex cos_i) {
+    const Complex ratio = n_i / n_t;
+    const Complex sin2_t = ratio * ratio * (1.0 - cos_i * cos_i);
+    Complex cos_t = std::sqrt(1.0 - sin2_t);
+    // The principal root already has Re ≥ 0; on the imaginary axis (total internal reflection in a
+    // lossless medium) pick Im ≥ 0 so that exp(i k n d cos) decays.
+    if (cos_t.real() == 0.0 && cos_t.imag() < 0.0) cos_t = -cos_t;
+    return cos_t;
+}
+
+Amplitudes fresnel(Complex n_i, Complex n_t, Complex cos_i, Complex cos_t, Polarisation polarisation) {
+    if (polarisation == Polarisation::S) {
+        const Complex denominator = n_i * cos_i + n_t * cos_t;
+        return {(n_i * cos_i - n_t * cos_t) / denominator, 2.0 * n_i * cos_i / denominator};
+    }
+    const Complex denominator = n_t * cos_i + n_i * cos_t;
+    return {(n_t * cos_i - n_i * cos_t) / denominator, 2.0 * n_i * cos_i / denominator};
+}
+
+double interface_reflectance(Complex n_i, Complex n_t, double cos_i) {
+    const Complex cos_t = refracted_cos(n_i, n_t, cos_i);
+    return 0.5 * (std::norm(fresnel(n_i, n_t, cos_i, cos_t, Polarisation::S).r) +
+                  std::norm(fresnel(n_i, n_t, cos_i, cos_t, Polarisation::P).r));
+}
+
+}  // namespace fxview::optics

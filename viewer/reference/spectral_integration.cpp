@@ -1,0 +1,31 @@
+#include "reference/spectral_integration.hpp"
+
+#include <algorithm>
+
+namespace fxview::reference {
+
+SpectralSetup spectral_setup(const ReferenceContext& c) {
+    SpectralSetup s{};
+    const bool bytes = c.number("ByteCmf") != 0.0;
+    s.cmf = &c.generated(bytes ? "CmfBytes" : "CmfFloat");
+    s.spectra = &c.generated("Spectra");
+    s.cmf_unit = 1.0 / s.cmf->scale;
+    s.observer = static_cast<int>(c.number("Observer"));
+    s.lower = static_cast<int>(c.number("Lower"));
+    s.upper = static_cast<int>(c.number("Upper"));
+    s.steps = std::max(1, static_cast<int>(c.number("Steps")));
+    s.k = c.number("K");
+    s.brightness = c.number("Brightness");
+    s.mapping = static_cast<int>(c.number("OutputMode"));
+    return s;
+}
+
+std::array<double, 4> to_rgba(const spectral::Vec3& xyz, int mode) {
+    const auto mapping = mode == 1 ? spectral::GamutMapping::Desaturate
+                         : mode == 2 ? spectral::GamutMapping::Scale
+                                     : spectral::GamutMapping::Clip;
+    const spectral::Vec3 rgb = spectral::xyz_to_linear_srgb(xyz, mapping);
+    return {rgb[0], rgb[1], rgb[2], 1.0};
+}
+
+}  // namespace fxview::reference

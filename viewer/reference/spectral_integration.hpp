@@ -1,0 +1,44 @@
+// What every spectral reference shares with effects/lib/spectral.glsl: the CMF and spectrum textures
+// the GPU samples, the integration range and k, and XYZ -> linear sRGB (eq. 9) with the chosen gamut
+// mapping. The references weigh each wavelength themselves.
+#pragma once
+#include <array>
+
+#include "reference/reference.hpp"
+#include "spectral/colorimetry.hpp"
+#include "spectral/packing.hpp"
+
+namespace fxview::reference {
+
+struct SpectralSetup {
+    const spectral::PackedTexture* cmf;
+    const spectral::PackedTexture* spectra;
+    int observer, lower, upper, steps, mapping;
+    double cmf_unit;  // the GPU reads stored values: 8-bit CMFs are divided by their scale
+    double k, brightness;
+};
+
+// Reads ByteCmf, Observer, Lower, Upper, Steps, K, Brightness and OutputMode.
+SpectralSetup spectral_setup(const ReferenceContext& c);
+
+// Sum over the sampled wavelengths (every nm, or Lower..Upper in Steps) of weight(nm) * cmf(nm),
+// times k (the user's, or 1 / sum ybar) and the brightness.
+template <typename Weight>
+spectral::Vec3 integrate(const SpectralSetup& s, bool every_nm, Weight weight) {
+    spectral::Vec3 xyz{0, 0, 0};
+    double ybar = 0;
+    for (int nm = s.lower; nm <= s.upper; nm += every_nm ? 1 : s.steps) {
+        const spectral::Vec3 cmf = spectral::cmf_value(*s.cmf, s.observer, nm);
+        const double w = weight(nm);
+        for (int c = 0; c < 3; ++c) xyz[c] += w * cmf[c] * s.cmf_unit;
+        ybar += cmf[1] * s.cmf_unit;
+    }
+    const double k = (s.k > 0 ? s.k : 1.0 / ybar) * s.brightness;
+    for (double& v : xyz) v *= k;
+    return xyz;
+}
+
+// The effect's output for an XYZ value: linear sRGB after the gamut mapping `mode` (OutputMode), alpha 1.
+std::array<double, 4> to_rgba(const spectral::Vec3& xyz, int mode);
+
+}  // namespace fxview::reference

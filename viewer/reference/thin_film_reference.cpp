@@ -1,0 +1,130 @@
+// Thin films from viewer/optics (DOMAIN.md §3): the light spectrum times the film's reflectance at
+// each sampled wavelength, integrated like every spectral reference. The exact techniques
+// (FresnelExact, Bubble, MultiLayer*) are checked against characteristic matrices, a method the
+// GLSL does not use (it runs Airy's sum and Hirayama's recursion); the thesis' approximations
+// against their documented formulas in double precision.
+#include "reference/thin_film_reference.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "optics/thesis_models.hpp"
+#include "optics/thin_film.hpp"
+#include "reference/spectral_integration.hpp"
+
+namespace fxview::reference {
+namespace {
+
+struct Film {
+    double n0, n1, n2, kappa;
+    double cos_light, cos_view, cos0;
+    double thickness;  // nm at this pixel (layer A of a stack)
+    optics::Stack stack;
+};
+
+Film film(const ShadingInput& in, const ReferenceContext& c) {
+    Film f{};
+    f.n0 = c.number("OuterIndex");
+    f.n1 = c.number("FilmIndex");
+    f.n2 = c.number("SubstrateIndex");
+    f.kappa = c.number("SubstrateKappa");
+    const glm::dvec3 n = glm::normalize(in.normal);
+    f.cos_light = std::clamp(glm::dot(n, glm::normalize(in.light - in.position)), 0.0, 1.0);
+    f.cos_view = std::clamp(glm::dot(n, glm::normalize(in.camera - in.position)), 0.0, 1.0);
+    f.cos0 = c.number("Incidence") == 1.0 ? f.cos_light : f.cos_view;
+    // An inverted paraboloid over the texture square, peaking at its centre (fig. 27).
+    const glm::dvec2 centred = 2.0 * in.uv - 1.0;
+    f.thickness = c.number("Thickness") + c.number("Variation") * std::max(1.0 - glm::dot(centred, centred), 0.0);
+    // The stack: odd layers (from the top) are the film A, even ones B.
+    f.stack.outer = f.n0;
+    f.stack.substrate = optics::Complex(f.n2, f.kappa);
+    const int layers = std::clamp(static_cast<int>(c.number("Layers")), 1, 16);
+    for (int j = 1; j <= layers; ++j)
+        f.stack.layers.push_back(j % 2 == 1 ? optics::Layer{f.n1, f.thickness}
+                                            : optics::Layer{c.number("SecondIndex"), c.number("SecondThickness")});
+    return f;
+}
+
+using Reflectance = std::function<double(const Film&, double nm)>;
+
+Reference make(Reflectance reflectance, double tolerance, std::string why) {
+    Reference r;
+    r.shade = [reflectance](const ShadingInput& in, const ReferenceContext& c) {
+        const SpectralSetup s = spectral_setup(c);
+        const int light = static_cast<int>(c.number("LightSpectrum"));
+        const Film f = film(in, c);
+        return to_rgba(integrate(s, false, [&](int nm) { return spectral::packed_value(*s.spectra, light, nm) * reflectance(f, nm); }),
+                       s.mapping);
+    };
+    r.tolerance = tolerance;
+    r.why = std::move(why);
+    return r;
+}
+
+// Near grazing incidence r -> 1 and an etalon's finesse F = 4R/(1 - R)² grows without bound; the
+// reflectance's slope with respect to the phase grows like sqrt(F) and amplifies float rounding there.
+const char* kFinesseWhy =
+    "as for the other films, but near grazing incidence (silhouettes) the finesse 4R/(1-R)^2 of the film grows "
+    "without bound and amplifies the float phase error: measured up to 4e-5 there on llvmpipe (mostly ~1e-6)";
+
+const char* kPhaseWhy =
+    "float32 phases of up to ~60 rad (4 pi n d cos / lambda for micrometre films) carry ~1e-5 rad of rounding, "
+    "and the reflectance follows the phase with a slope below 1; summed over 471 wavelengths the colour error "
+    "stays near 1e-5 (measured on llvmpipe, docs/cpu-reference.md)";
+
+// Eq. 62's frac() jumps by 1 where 2 d n cos / lambda crosses an integer. The GPU's value of that
+// argument is a few float roundings off (~1e-6 relative); at wavelengths closer than that to a jump
+// either side is right, and the colour may differ by that wavelength's whole contribution.
+double path_difference_slack(const ShadingInput& in, const ReferenceContext& c) {
+    const SpectralSetup s = spectral_setup(c);
+    const int light = static_cast<int>(c.number("LightSpectrum"));
+    const Film f = film(in, c);
+    // The largest absolute row sum of eq. 9 bounds how far one XYZ step moves any RGB channel.
+    const double row_sum = 3.240479 + 1.537150 + 0.498535;
+    double ybar = 0, jump = 0;
+    for (int nm = s.lower; nm <= s.upper; nm += s.steps) {
+        const spectral::Vec3 cmf = spectral::cmf_value(*s.cmf, s.observer, nm);
+        ybar += cmf[1] * s.cmf_unit;
+        const double cycles = optics::thesis::path_difference(f.n0, f.n1, f.thickness, nm, f.cos_light, f.cos_view).cycles;
+        // frac() jumps at 1, 2, ...; at 0 it is continuous (the argument is never negative).
+        if (std::round(cycles) >= 1.0 && std::abs(cycles - std::round(cycles)) < 4e-6 * cycles)
+            jump += spectral::packed_value(*s.spectra, light, nm) * std::max({cmf[0], cmf[1], cmf[2]}) * s.cmf_unit;
+    }
+    return jump * row_sum * (s.k > 0 ? s.k : 1.0 / ybar) * s.brightness;
+}
+
+}  // namespace
+
+std::map<std::string, Reference> thin_film_references() {
+    std::map<std::string, Reference> all;
+    Reference path = make([](const Film& f, double nm) {
+        return optics::thesis::path_difference(f.n0, f.n1, f.thickness, nm, f.cos_light, f.cos_view).intensity;
+    }, 5e-5, std::string(kPhaseWhy) + "; pixels where a wavelength sits on frac()'s jump get that wavelength's share as slack");
+    path.slack = path_difference_slack;
+    all.emplace("PathDifference", std::move(path));
+
+    const Reflectance durikovic = [](const Film& f, double nm) { return optics::thesis::durikovic(f.n0, f.n1, f.n2, f.thickness, nm, f.cos0); };
+    all.emplace("Fresnel", make(durikovic, 5e-5, kPhaseWhy));
+    all.emplace("FresnelFaster", make(durikovic, 5e-5, kPhaseWhy));
+    all.emplace("FresnelAlternative", make([](const Film& f, double nm) {
+        return optics::thesis::alternative(f.n0, f.n1, f.n2, f.thickness, nm, f.cos0);
+    }, 5e-5, kPhaseWhy));
+    all.emplace("FabryPerot", make([](const Film& f, double nm) {
+        return optics::thesis::fabry_perot(f.n0, f.n1, f.thickness, nm, f.cos0);
+    }, 1e-4, kFinesseWhy));
+
+    // Exact models against characteristic matrices.
+    all.emplace("FresnelExact", make([](const Film& f, double nm) {
+        return optics::transfer_matrix_reflectance(optics::Stack{f.n0, {{f.n1, f.thickness}}, optics::Complex(f.n2, f.kappa)}, nm, f.cos0);
+    }, 5e-5, kPhaseWhy));
+    all.emplace("Bubble", make([](const Film& f, double nm) {
+        return optics::transfer_matrix_reflectance(optics::Stack{f.n0, {{f.n1, f.thickness}}, f.n0}, nm, f.cos0);
+    }, 1e-4, kFinesseWhy));
+    const Reflectance stack = [](const Film& f, double nm) { return optics::transfer_matrix_reflectance(f.stack, nm, f.cos0); };
+    all.emplace("MultiLayer", make(stack, 5e-5, kPhaseWhy));
+    all.emplace("MultiLayerFaster", make(stack, 5e-5, kPhaseWhy));
+    return all;
+}
+
+}  // namespace fxview::reference
