@@ -3,12 +3,15 @@
 # the repository root, with build/bin/fxview built here and the glvnd .debs of the device README
 # unpacked first. It records the renderer, the normal view at 64x64 (gpu.pfm: compare it here with
 # `fxview render --size 64x64 --out llvmpipe.pfm`; the issue asks for at most 1/255 difference),
-# the GPU-vs-CPU comparison of the spectral techniques and their frame times.
+# the GPU-vs-CPU comparison of the spectral and thin-film techniques and their frame times.
 set -euo pipefail
 out=${OUT:-out}/gpu-check
 mkdir -p "$out"
 fxview=build/bin/fxview
 "$fxview" info --backend egl --json | tee "$out/info.json"
+"$fxview" info --backend egl-device --json | tee "$out/info-device.json" || true
 "$fxview" render --size 64x64 --out "$out/gpu.pfm"
 "$fxview" compare effects/spectral/wavelength.fx --json --heatmap "$out/compare.png" | tee "$out/compare.jsonl" || true
+"$fxview" compare effects/spectral/thinfilm.fx --size 96x96 --json --heatmap "$out/compare-thinfilm.png" | tee "$out/compare-thinfilm.jsonl" || true
 "$fxview" bench effects/spectral/wavelength.fx --frames 10 | tee "$out/bench.md"
+"$fxview" bench effects/spectral/thinfilm.fx --frames 10 | tee "$out/bench-thinfilm.md"

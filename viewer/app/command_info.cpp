@@ -14,7 +14,7 @@ CommandRunner add_info_command(CLI::App& app) {
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("info", "Print the GL vendor, renderer and version of a backend");
-    command->add_option("--backend", options->backend, "egl, osmesa or glfw")->capture_default_str();
+    command->add_option("--backend", options->backend, "egl, egl-device, osmesa or glfw")->capture_default_str();
     command->add_flag("--json", options->json, "Print one JSON object");
     return [options] {
         context::ContextOptions context_options;

@@ -10,7 +10,7 @@ void add_scene_options(CLI::App& command, SceneOptions& o) {
     command.add_option("--mesh", o.mesh, "Built-in mesh (sphere, torus, cube, plane, disc, knot) or an .obj file")
         ->capture_default_str();
     command.add_option("--size", o.size, "Image size WIDTHxHEIGHT")->capture_default_str();
-    command.add_option("--backend", o.backend, "GL context: egl (headless), osmesa (software) or glfw (window)")
+    command.add_option("--backend", o.backend, "GL context: egl (headless), egl-device (headless, EGL device platform only), osmesa (software) or glfw (window)")
         ->capture_default_str();
     command.add_option("--samples", o.samples, "MSAA samples (0 = off)")->check(CLI::Range(0, 32));
     command.add_option("--debug-view", o.debug_view, "Debug shader: normals, uv, camera or light")->capture_default_str();

@@ -11,14 +11,16 @@ namespace fxview::context {
 
 Backend parse_backend(std::string_view name) {
     if (name == "egl") return Backend::Egl;
+    if (name == "egl-device") return Backend::EglDevice;
     if (name == "osmesa") return Backend::OsMesa;
     if (name == "glfw") return Backend::Glfw;
-    throw UsageError("unknown backend '" + std::string(name) + "' (expected egl, osmesa or glfw)");
+    throw UsageError("unknown backend '" + std::string(name) + "' (expected egl, egl-device, osmesa or glfw)");
 }
 
 std::string_view backend_name(Backend backend) {
     switch (backend) {
         case Backend::Egl: return "egl";
+        case Backend::EglDevice: return "egl-device";
         case Backend::OsMesa: return "osmesa";
         case Backend::Glfw: return "glfw";
     }
@@ -27,7 +29,8 @@ std::string_view backend_name(Backend backend) {
 
 std::unique_ptr<Context> create_context(const ContextOptions& options) {
     switch (options.backend) {
-        case Backend::Egl: return detail::create_egl_context(options);
+        case Backend::Egl:
+        case Backend::EglDevice: return detail::create_egl_context(options);
         case Backend::OsMesa: return detail::create_osmesa_context(options);
         case Backend::Glfw: return detail::create_glfw_context(options);
     }

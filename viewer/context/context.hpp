@@ -10,7 +10,9 @@ struct GLFWwindow;
 
 namespace fxview::context {
 
-enum class Backend { Egl, OsMesa, Glfw };
+// Egl: surfaceless platform, falling back to the device platform; EglDevice: the device platform
+// only (EGL_EXT_platform_device, what some NVIDIA drivers offer), to exercise that path anywhere.
+enum class Backend { Egl, EglDevice, OsMesa, Glfw };
 
 Backend parse_backend(std::string_view name);  // throws UsageError on an unknown name
 std::string_view backend_name(Backend backend);

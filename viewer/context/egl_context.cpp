@@ -27,11 +27,11 @@ std::string egl_error_text(const char* what) {
     return std::string("egl: ") + what + " failed (EGL error " + code + ")";
 }
 
-EGLDisplay open_display() {
+EGLDisplay open_display(bool device_only) {
     const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     auto get_platform_display =
         reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-    if (get_platform_display && has_extension(client_extensions, "EGL_MESA_platform_surfaceless")) {
+    if (!device_only && get_platform_display && has_extension(client_extensions, "EGL_MESA_platform_surfaceless")) {
         EGLDisplay display = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
         if (display != EGL_NO_DISPLAY && eglInitialize(display, nullptr, nullptr)) return display;
     }
@@ -45,14 +45,14 @@ EGLDisplay open_display() {
                 if (display != EGL_NO_DISPLAY && eglInitialize(display, nullptr, nullptr)) return display;
             }
     }
-    throw Error("egl: no surfaceless or device platform display could be initialised "
-                "(is Mesa's libegl-mesa0 or an NVIDIA driver installed?)");
+    throw Error(std::string("egl: no ") + (device_only ? "device" : "surfaceless or device") +
+                " platform display could be initialised (is Mesa's libegl-mesa0 or an NVIDIA driver installed?)");
 }
 
 class EglContext final : public Context {
 public:
     explicit EglContext(const ContextOptions& options) {
-        display_ = open_display();
+        display_ = open_display(options.backend == Backend::EglDevice);
         if (!eglBindAPI(EGL_OPENGL_API)) {
             eglTerminate(display_);
             throw Error(egl_error_text("eglBindAPI(EGL_OPENGL_API)"));
