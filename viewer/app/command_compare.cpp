@@ -53,7 +53,7 @@ CommandRunner add_compare_command(CLI::App& app) {
                                 {"worst_pixel", {{"x", r.worst_pixel.x}, {"y", r.worst_pixel.y}, {"gpu", r.worst_pixel.gpu}, {"cpu", r.worst_pixel.cpu}}},
                                 {"mismatched_8bit", r.mismatched_8bit},
                                 {"exceeding", r.exceeding},
-                                {"pixels_with_slack", r.pixels_with_slack},
+                                {"pixels_within_slack", r.pixels_within_slack},
                                 {"tolerance", r.tolerance},
                                 {"tolerance_reason", r.tolerance_reason}});
                 } else {
@@ -65,7 +65,7 @@ CommandRunner add_compare_command(CLI::App& app) {
             } else {
                 std::printf("%-20s %s  pixels %ld  max %.3g  mean %.3g  8-bit mismatches %ld  tolerance %.3g", r.technique.c_str(),
                             r.pass ? "pass" : "FAIL", r.pixels, r.max_abs_error, r.mean_abs_error, r.mismatched_8bit, r.tolerance);
-                if (r.pixels_with_slack > 0) std::printf("  (%ld pixels on a discontinuity)", r.pixels_with_slack);
+                if (r.pixels_within_slack > 0) std::printf("  (%ld pixels within their slack)", r.pixels_within_slack);
                 std::printf("\n");
             }
         }

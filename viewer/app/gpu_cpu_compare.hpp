@@ -23,7 +23,7 @@ struct CompareResult {
     } worst_pixel;
     long mismatched_8bit = 0;  // pixels whose displayed 8-bit value differs by more than one code
     long exceeding = 0;        // pixels whose error is above the tolerance (plus their slack)
-    long pixels_with_slack = 0;  // pixels at a discontinuity of the technique, allowed a larger error
+    long pixels_within_slack = 0;  // pixels above the tolerance but within their slack (a jump, a sensitive highlight)
     double tolerance = 0;
     std::string tolerance_reason;
     bool pass = false;

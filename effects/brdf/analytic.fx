@@ -1,0 +1,115 @@
+// Analytic BRDFs under one point light (DOMAIN.md §7): the PBR sandbox of seed 004 (metallic-
+// roughness Cook-Torrance with GGX), the energy-conserving Phong and Cook-Torrance with Beckmann of
+// seed 001, and Ashikhmin-Shirley of seed 000 (anisotropic, and the simplified model its fitter
+// uses). Outgoing radiance L = f(l, v) · E · (n·l), linear RGB. CPU references:
+// viewer/reference/brdf_reference.cpp on viewer/brdf/models.cpp.
+#include "standard.glsl"
+#include "brdf.glsl"
+
+uniform float LightIrradiance < string UIName = "Light irradiance E"; float UIMin = 0; float UIMax = 20; float UIStep = 0.1; string UIGroup = "Light";
+                                string UIHelp = "Irradiance the point light delivers at normal incidence (no distance fall-off)"; > = 3.0;
+
+uniform vec3 BaseColor < string UIName = "Base colour"; string UIWidget = "color"; string UIGroup = "PBR";
+                         string UIHelp = "Linear F0 of metals (seed 004: gold 1.00/0.71/0.29, copper 0.95/0.64/0.54), albedo of non-metals; also Lambert's albedo"; > = {1.0, 0.71, 0.29};
+uniform float Metallic < string UIName = "Metallic"; float UIMin = 0; float UIMax = 1; string UIGroup = "PBR"; > = 1.0;
+uniform float Roughness < string UIName = "Roughness"; float UIMin = 0.05; float UIMax = 1; string UIGroup = "PBR";
+                          string UIHelp = "GGX alpha = roughness squared; Smith-Schlick k = (roughness + 1)^2 / 8"; > = 0.4;
+
+uniform vec3 PhongDiffuse < string UIName = "kd"; string UIWidget = "color"; string UIGroup = "Modified Phong"; > = {0.5, 0.12, 0.1};
+uniform float PhongSpecular < string UIName = "ks"; float UIMin = 0; float UIMax = 1; string UIGroup = "Modified Phong";
+                              string UIHelp = "Energy conserving while kd + ks <= 1"; > = 0.4;
+uniform float PhongExponent < string UIName = "Exponent n"; float UIMin = 1; float UIMax = 1000; string UIGroup = "Modified Phong"; > = 40.0;
+
+uniform vec3 CTDiffuse < string UIName = "kd"; string UIWidget = "color"; string UIGroup = "Cook-Torrance (Beckmann)"; > = {0.1, 0.2, 0.5};
+uniform float CTSpecular < string UIName = "ks"; float UIMin = 0; float UIMax = 1; string UIGroup = "Cook-Torrance (Beckmann)"; > = 1.0;
+uniform float BeckmannM < string UIName = "Slope m"; float UIMin = 0.02; float UIMax = 1; string UIGroup = "Cook-Torrance (Beckmann)";
+                          string UIHelp = "RMS slope of the microfacets"; > = 0.3;
+uniform float Eta < string UIName = "Index of refraction"; float UIMin = 1; float UIMax = 3; float UIStep = 0.01; string UIGroup = "Cook-Torrance (Beckmann)"; > = 1.5;
+uniform bool PrintedBeckmann < string UIName = "Beckmann as printed"; string UIGroup = "Cook-Torrance (Beckmann)";
+                               string UIHelp = "Seed 001's 1/(4 m^2 cos^4) instead of the normalised 1/(pi m^2 cos^4): highlights 4/pi too bright"; > = false;
+
+uniform vec3 ASDiffuse < string UIName = "Rd"; string UIWidget = "color"; string UIGroup = "Ashikhmin-Shirley"; > = {0.45, 0.3, 0.15};
+uniform vec3 ASSpecular < string UIName = "Rs"; string UIWidget = "color"; string UIGroup = "Ashikhmin-Shirley"; > = {0.3, 0.3, 0.3};
+uniform float Nu < string UIName = "nu (along the tangent)"; float UIMin = 1; float UIMax = 10000; string UIGroup = "Ashikhmin-Shirley"; > = 20.0;
+uniform float Nv < string UIName = "nv (across)"; float UIMin = 1; float UIMax = 10000; string UIGroup = "Ashikhmin-Shirley"; > = 500.0;
+
+uniform vec3 FitDiffuse < string UIName = "cd"; string UIWidget = "color"; string UIGroup = "Ashikhmin-Shirley fit (eq. 4.28)"; > = {0.2, 0.2, 0.2};
+uniform vec3 FitSpecular < string UIName = "cs"; string UIWidget = "color"; string UIGroup = "Ashikhmin-Shirley fit (eq. 4.28)"; > = {0.2, 0.2, 0.2};
+uniform float FitExponent < string UIName = "ns"; float UIMin = 1; float UIMax = 10000; string UIGroup = "Ashikhmin-Shirley fit (eq. 4.28)"; > = 50.0;
+
+// Every technique: f at this fragment times E (n·l); black where light or eye is below the surface.
+Frame frame_here(vec3 position, vec3 normal, vec3 tangent) { return make_frame(position, normal, tangent, LightPosition, CameraPosition); }
+vec4 radiance(Frame f, vec3 brdf) { return vec4(visible(f) ? brdf * LightIrradiance * f.nl : vec3(0.0), 1.0); }
+
+GLSLShader LambertFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
+        color = radiance(f, visible(f) ? BaseColor / kPi : vec3(0.0));
+        fx_capture();
+    }
+}
+
+GLSLShader PBRFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
+        color = radiance(f, visible(f) ? metallic_roughness(f, BaseColor, Metallic, Roughness) : vec3(0.0));
+        fx_capture();
+    }
+}
+
+GLSLShader ModifiedPhongFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
+        color = radiance(f, visible(f) ? modified_phong(f, PhongDiffuse, PhongSpecular, PhongExponent) : vec3(0.0));
+        fx_capture();
+    }
+}
+
+GLSLShader CookTorranceBeckmannFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
+        color = radiance(f, visible(f) ? cook_torrance_beckmann(f, CTDiffuse, CTSpecular, BeckmannM, Eta, PrintedBeckmann) : vec3(0.0));
+        fx_capture();
+    }
+}
+
+GLSLShader AshikhminShirleyFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
+        color = radiance(f, visible(f) ? ashikhmin_shirley(f, ASDiffuse, ASSpecular, Nu, Nv) : vec3(0.0));
+        fx_capture();
+    }
+}
+
+GLSLShader AshikhminShirleyFitFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
+        color = radiance(f, visible(f) ? ashikhmin_shirley_fit(f, FitDiffuse, FitSpecular, FitExponent) : vec3(0.0));
+        fx_capture();
+    }
+}
+
+technique Lambert { pass p0 { VertexShader = StandardVS; FragmentShader = LambertFS; } }
+technique PBR { pass p0 { VertexShader = StandardVS; FragmentShader = PBRFS; } }
+technique ModifiedPhong { pass p0 { VertexShader = StandardVS; FragmentShader = ModifiedPhongFS; } }
+technique CookTorranceBeckmann { pass p0 { VertexShader = StandardVS; FragmentShader = CookTorranceBeckmannFS; } }
+technique AshikhminShirley { pass p0 { VertexShader = StandardVS; FragmentShader = AshikhminShirleyFS; } }
+technique AshikhminShirleyFit { pass p0 { VertexShader = StandardVS; FragmentShader = AshikhminShirleyFitFS; } }
