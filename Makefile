@@ -34,9 +34,11 @@ run: build
 	$(FXVIEW) render effects/spectral/thinfilm.fx --technique MultiLayerFaster --mesh knot --size 512x512 --out out/knot-multilayer.png
 	$(FXVIEW) render effects/brdf/analytic.fx --preset effects/brdf/presets/gold.json --technique PBR --mesh knot --size 512x512 --samples 4 --out out/knot-pbr-gold.png
 	$(FXVIEW) render effects/brdf/analytic.fx --technique AshikhminShirley --mesh torus --camera-rotate 30,0,0 --size 512x512 --samples 4 --out out/torus-ashikhmin-shirley.png
+	$(FXVIEW) render effects/spectral/cd.fx --technique Grating --mesh disc --camera-rotate 50,0,0 --size 512x512 --out out/disc-cd.png
 	$(FXVIEW) spectra plot D65 A F11 TCS09 --out out/spectra.png
 	$(FXVIEW) compare effects/spectral/wavelength.fx --heatmap out/compare.png
 	$(FXVIEW) compare effects/spectral/thinfilm.fx --size 96x96 --heatmap out/compare-thinfilm.png
+	$(FXVIEW) compare effects/spectral/cd.fx --mesh disc --camera-rotate 50,0,0 --size 96x96 --heatmap out/compare-cd.png
 	$(FXVIEW) compare effects/brdf/analytic.fx --heatmap out/compare-brdf.png
 	$(FXVIEW) render --mesh sphere --size 256x256 --out out/sphere-normals.exr
 	$(FXVIEW) pick --mesh sphere --size 256x256 --at 128,128

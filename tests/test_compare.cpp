@@ -164,3 +164,29 @@ TEST_CASE("every analytic BRDF matches viewer/brdf, also with sharp highlights; 
         CHECK(!app::compare_technique(request, technique, {wrong}).pass);
     }
 }
+
+TEST_CASE("CD diffraction on the disc matches its references; a wrong track spacing fails") {
+    app::RenderRequest request = sphere_request();
+    request.width = request.height = 96;
+    request.effect.path = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/cd.fx";
+    request.scene.objects.front().mesh = "disc";
+    request.scene.objects.front().pose.rotation = glm::angleAxis(-0.9f, glm::vec3(1, 0, 0));
+    for (const auto& variant : std::vector<std::vector<std::string>>{
+             {}, {"Tracks=60", "TrackSpacing=740", "Steps=3", "Threshold=0.2", "LightSpectrum=F11", "SubstrateSpectrum=TCS09"}}) {
+        request.effect.sets = variant;
+        for (const auto& technique : app::technique_names(request.effect.path)) {
+            CAPTURE(technique);
+            const app::CompareResult r = app::compare_technique(request, technique, {});
+            CHECK(r.has_reference);
+            CHECK(r.pixels > 2000);
+            CHECK(r.pass);
+            CHECK(r.pixels_within_slack * 100 < r.pixels);  // slack only where x sits on a jump
+            MESSAGE(technique, ": max ", r.max_abs_error, " mean ", r.mean_abs_error, " slack pixels ", r.pixels_within_slack);
+        }
+    }
+    request.effect.sets = {};
+    for (const auto& technique : app::technique_names(request.effect.path)) {
+        CAPTURE(technique);
+        CHECK(!app::compare_technique(request, technique, {"TrackSpacing=1601"}).pass);
+    }
+}

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "optics/grating.hpp"
 #include "optics/thesis_models.hpp"
 #include "optics/thin_film.hpp"
 
@@ -158,4 +159,31 @@ TEST_CASE("grazing incidence reflects everything") {
     for (const Polarisation p : {Polarisation::S, Polarisation::P})
         CHECK(transfer_matrix(stack, 500.0, 0.0, p).reflectance == 1.0);
     CHECK(transfer_matrix_reflectance(stack, 500.0, 1e-7) == doctest::Approx(1.0).epsilon(1e-5));
+}
+
+TEST_CASE("a CD's tracks: N-slit interference peaks where the grating equation says") {
+    // Closed form against the explicit phasor sum (1e-12), for track counts from 2 to 50.
+    for (const int tracks : {2, 7, 50})
+        for (const double x : {0.0, 0.13, 0.5, 0.999, 1.0, 2.37, 3.0})
+            CHECK(grating_intensity(x, tracks) == doctest::Approx(grating_intensity_phasors(x, tracks)).epsilon(1e-12).scale(1.0));
+    // Orders at integer x (full intensity), zeros at x = m/N between them.
+    CHECK(grating_intensity(2.0, 10) == 1.0);
+    CHECK(grating_intensity(0.1, 10) < 1e-28);
+    CHECK(grating_intensity(0.3, 10) < 1e-28);
+    // Light along the normal, d = 1600 nm (CD): green 500 nm leaves in first order at
+    // sin θ = λ/d = 0.3125 (18.2°, Hecht eq. 10.61), a DVD (740 nm) sends it to sin θ = 0.676 (42.5°).
+    CHECK(grating_intensity(1600.0 * 0.3125 / 500.0, 20) == doctest::Approx(1.0).epsilon(1e-12));
+    CHECK(grating_intensity(740.0 * (500.0 / 740.0) / 500.0, 20) == doctest::Approx(1.0).epsilon(1e-12));
+    CHECK(grating_intensity(1600.0 * 0.29 / 500.0, 20) < 0.05);  // 1.3° off the order: dark (20 tracks)
+}
+
+TEST_CASE("the thesis' CD intensity (eq. 72) with its spacing rule and hard threshold") {
+    // Light across the tracks: d_eff = d. 1600 · |0.9 − 0.6| / 400 = 1.2 cycles → 0.2, below 0.5 → cut.
+    const auto cut = thesis::cd_intensity(1600.0, 0.0, 0.9, 0.6, 400.0, 0.5);
+    CHECK(cut.cycles == doctest::Approx(1.2).epsilon(1e-12));
+    CHECK(cut.intensity == 0.0);
+    // Light along the tracks: d_eff = 3d = 4800; 4800 · 0.3 / 400 = 3.6 → 0.6, kept.
+    const auto kept = thesis::cd_intensity(1600.0, 1.0, 0.9, 0.6, 400.0, 0.5);
+    CHECK(kept.spacing_nm == 4800.0);
+    CHECK(kept.intensity == doctest::Approx(0.6).epsilon(1e-9));
 }

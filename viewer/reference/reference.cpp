@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "reference/brdf_reference.hpp"
+#include "reference/cd_reference.hpp"
 #include "reference/debug_reference.hpp"
 #include "reference/example_reference.hpp"
 #include "reference/spectral_reference.hpp"
@@ -29,6 +30,7 @@ const Reference* find_reference(const std::string& effect_stem, const std::strin
         std::map<std::string, Reference> all;
         for (auto& [name, reference] : spectral_references()) all.emplace("wavelength/" + name, std::move(reference));
         for (auto& [name, reference] : thin_film_references()) all.emplace("thinfilm/" + name, std::move(reference));
+        for (auto& [name, reference] : cd_references()) all.emplace("cd/" + name, std::move(reference));
         for (auto& [name, reference] : brdf_references()) all.emplace("analytic/" + name, std::move(reference));
         for (auto& [name, reference] : debug_references()) all.emplace("debug/" + name, std::move(reference));
         for (auto& [name, reference] : example_references()) all.emplace("textured/" + name, std::move(reference));

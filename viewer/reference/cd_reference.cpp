@@ -1,0 +1,112 @@
+// CD diffraction from viewer/optics/grating (double precision): the thesis' eq. 72 and the N-track
+// interference, the latter summed as explicit phasors (the GLSL uses the closed form). Both are
+// steep or discontinuous in x = d u / λ, whose float value on the GPU is a few ulps off; the slack
+// is what that uncertainty can change at each pixel.
+#include "reference/cd_reference.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "optics/grating.hpp"
+#include "reference/spectral_integration.hpp"
+
+namespace fxview::reference {
+namespace {
+
+struct Disc {
+    glm::dvec3 n, l, v, across, along;
+};
+
+Disc disc(const ShadingInput& in) {
+    Disc d;
+    d.n = glm::normalize(in.normal);
+    d.l = glm::normalize(in.light - in.position);
+    d.v = glm::normalize(in.camera - in.position);
+    const glm::dvec3 t = glm::normalize(in.tangent - d.n * glm::dot(d.n, in.tangent));
+    const glm::dvec3 b = glm::cross(d.n, t);
+    const glm::dvec2 radial = in.uv - 0.5;
+    d.across = glm::dot(radial, radial) > 0 ? glm::normalize(radial.x * t + radial.y * b) : t;
+    d.along = glm::cross(d.n, d.across);
+    return d;
+}
+
+// Diffracted intensity at one wavelength, and how far it can move when x is off by its float error.
+struct Sample {
+    double intensity, uncertainty;
+};
+using Diffraction = std::function<Sample(const Disc&, const ReferenceContext&, int nm)>;
+
+// The float error of x = d·u/λ on the GPU: a handful of roundings in normalisations, dot products
+// and the division (each ~6e-8 relative; 1e-6 is generous), plus the error of u itself, which is
+// absolute where u is a difference of cosines (eq. 72) or a sum of components that cancel: a few
+// ulps of each cosine, 4e-7.
+double x_error(double x, double spacing_nm, int nm) { return 1e-6 * std::abs(x) + 4e-7 * spacing_nm / nm; }
+
+Sample thesis_sample(const Disc& d, const ReferenceContext& c, int nm) {
+    const double threshold = c.number("Threshold");
+    const auto r = optics::thesis::cd_intensity(c.number("TrackSpacing"), std::abs(glm::dot(d.along, d.l)), glm::dot(d.n, d.v),
+                                                glm::dot(d.n, d.l), nm, threshold);
+    const double fraction = r.cycles - std::floor(r.cycles), error = x_error(r.cycles, r.spacing_nm, nm);
+    // frac() jumps at integers (from ~1 to 0) and the cut at the threshold (from ~threshold to 0).
+    const bool near_integer = r.cycles >= 0.5 && std::abs(r.cycles - std::round(r.cycles)) < error;
+    const bool near_threshold = std::abs(fraction - threshold) < error;
+    return {r.intensity, near_integer ? 1.0 : near_threshold ? threshold + error : error};
+}
+
+Sample grating_sample(const Disc& d, const ReferenceContext& c, int nm) {
+    const int tracks = std::max(1, static_cast<int>(c.number("Tracks")));
+    if (glm::dot(d.n, d.l) <= 0 || glm::dot(d.n, d.v) <= 0) return {0.0, 0.0};
+    const double spacing = c.number("TrackSpacing");
+    const double x = spacing * glm::dot(d.l + d.v, d.across) / nm;
+    const double intensity = optics::grating_intensity_phasors(x, tracks);
+    const double dx = x_error(x, spacing, nm);
+    const double spread = std::max(std::abs(optics::grating_intensity(x + dx, tracks) - intensity),
+                                   std::abs(optics::grating_intensity(x - dx, tracks) - intensity));
+    return {intensity, spread};
+}
+
+Reference make(Diffraction diffraction) {
+    Reference r;
+    r.shade = [diffraction](const ShadingInput& in, const ReferenceContext& c) {
+        const SpectralSetup s = spectral_setup(c);
+        const int light = static_cast<int>(c.number("LightSpectrum")), substrate = static_cast<int>(c.number("SubstrateSpectrum"));
+        const double weight = c.number("SubstrateWeight");
+        const Disc d = disc(in);
+        const double diffuse = std::max(glm::dot(d.n, d.l), 0.0);
+        return to_rgba(integrate(s, false, [&](int nm) {
+            return spectral::packed_value(*s.spectra, light, nm) *
+                   (diffraction(d, c, nm).intensity + weight * spectral::packed_value(*s.spectra, substrate, nm) * diffuse);
+        }), s.mapping);
+    };
+    // The colour moves by at most the uncertain intensities' share: their light-weighted CMFs times k,
+    // through eq. 9 (largest absolute row sum 5.28).
+    r.slack = [diffraction](const ShadingInput& in, const ReferenceContext& c) {
+        const SpectralSetup s = spectral_setup(c);
+        const int light = static_cast<int>(c.number("LightSpectrum"));
+        const Disc d = disc(in);
+        double ybar = 0, spread = 0;
+        for (int nm = s.lower; nm <= s.upper; nm += s.steps) {
+            const spectral::Vec3 cmf = spectral::cmf_value(*s.cmf, s.observer, nm);
+            ybar += cmf[1] * s.cmf_unit;
+            spread += diffraction(d, c, nm).uncertainty * spectral::packed_value(*s.spectra, light, nm) *
+                      std::max({cmf[0], cmf[1], cmf[2]}) * s.cmf_unit;
+        }
+        return spread * (3.240479 + 1.537150 + 0.498535) * (s.k > 0 ? s.k : 1.0 / ybar) * s.brightness;
+    };
+    r.tolerance = 5e-5;
+    r.why = "float32 sums of up to 471 products against double (as for the other spectral effects, measured ~1e-6); "
+            "where x = d u / lambda sits on a jump or a steep flank of a diffraction order, the change its float "
+            "error (1e-6 relative + 4e-7 d / lambda) can cause is the pixel's slack";
+    return r;
+}
+
+}  // namespace
+
+std::map<std::string, Reference> cd_references() {
+    std::map<std::string, Reference> all;
+    all.emplace("Thesis", make(thesis_sample));
+    all.emplace("Grating", make(grating_sample));
+    return all;
+}
+
+}  // namespace fxview::reference
