@@ -78,20 +78,13 @@ Reference make(Diffraction diffraction) {
                    (diffraction(d, c, nm).intensity + weight * spectral::packed_value(*s.spectra, substrate, nm) * diffuse);
         }), s.mapping);
     };
-    // The colour moves by at most the uncertain intensities' share: their light-weighted CMFs times k,
-    // through eq. 9 (largest absolute row sum 5.28).
     r.slack = [diffraction](const ShadingInput& in, const ReferenceContext& c) {
         const SpectralSetup s = spectral_setup(c);
         const int light = static_cast<int>(c.number("LightSpectrum"));
         const Disc d = disc(in);
-        double ybar = 0, spread = 0;
-        for (int nm = s.lower; nm <= s.upper; nm += s.steps) {
-            const spectral::Vec3 cmf = spectral::cmf_value(*s.cmf, s.observer, nm);
-            ybar += cmf[1] * s.cmf_unit;
-            spread += diffraction(d, c, nm).uncertainty * spectral::packed_value(*s.spectra, light, nm) *
-                      std::max({cmf[0], cmf[1], cmf[2]}) * s.cmf_unit;
-        }
-        return spread * (3.240479 + 1.537150 + 0.498535) * (s.k > 0 ? s.k : 1.0 / ybar) * s.brightness;
+        return colour_uncertainty(s, [&](int nm) {
+            return diffraction(d, c, nm).uncertainty * spectral::packed_value(*s.spectra, light, nm);
+        });
     };
     r.tolerance = 5e-5;
     r.why = "float32 sums of up to 471 products against double (as for the other spectral effects, measured ~1e-6); "

@@ -2,6 +2,7 @@
 // the GPU samples, the integration range and k, and XYZ -> linear sRGB (eq. 9) with the chosen gamut
 // mapping. The references weigh each wavelength themselves.
 #pragma once
+#include <algorithm>
 #include <array>
 
 #include "reference/reference.hpp"
@@ -36,6 +37,20 @@ spectral::Vec3 integrate(const SpectralSetup& s, bool every_nm, Weight weight) {
     const double k = (s.k > 0 ? s.k : 1.0 / ybar) * s.brightness;
     for (double& v : xyz) v *= k;
     return xyz;
+}
+
+// How far the linear sRGB output can move when the weight of each sampled wavelength is uncertain by
+// uncertainty(nm): the uncertain weights' CMF contributions times k, through eq. 9 (its largest
+// absolute row sum, 5.28, bounds any channel; clipping only shrinks the change).
+template <typename Uncertainty>
+double colour_uncertainty(const SpectralSetup& s, Uncertainty uncertainty) {
+    double ybar = 0, spread = 0;
+    for (int nm = s.lower; nm <= s.upper; nm += s.steps) {
+        const spectral::Vec3 cmf = spectral::cmf_value(*s.cmf, s.observer, nm);
+        ybar += cmf[1] * s.cmf_unit;
+        spread += uncertainty(nm) * std::max({cmf[0], cmf[1], cmf[2]}) * s.cmf_unit;
+    }
+    return spread * (3.240479 + 1.537150 + 0.498535) * (s.k > 0 ? s.k : 1.0 / ybar) * s.brightness;
 }
 
 // The effect's output for an XYZ value: linear sRGB after the gamut mapping `mode` (OutputMode), alpha 1.

@@ -80,18 +80,12 @@ double path_difference_slack(const ShadingInput& in, const ReferenceContext& c) 
     const SpectralSetup s = spectral_setup(c);
     const int light = static_cast<int>(c.number("LightSpectrum"));
     const Film f = film(in, c);
-    // The largest absolute row sum of eq. 9 bounds how far one XYZ step moves any RGB channel.
-    const double row_sum = 3.240479 + 1.537150 + 0.498535;
-    double ybar = 0, jump = 0;
-    for (int nm = s.lower; nm <= s.upper; nm += s.steps) {
-        const spectral::Vec3 cmf = spectral::cmf_value(*s.cmf, s.observer, nm);
-        ybar += cmf[1] * s.cmf_unit;
+    return colour_uncertainty(s, [&](int nm) {
         const double cycles = optics::thesis::path_difference(f.n0, f.n1, f.thickness, nm, f.cos_light, f.cos_view).cycles;
-        // frac() jumps at 1, 2, ...; at 0 it is continuous (the argument is never negative).
-        if (std::round(cycles) >= 1.0 && std::abs(cycles - std::round(cycles)) < 4e-6 * cycles)
-            jump += spectral::packed_value(*s.spectra, light, nm) * std::max({cmf[0], cmf[1], cmf[2]}) * s.cmf_unit;
-    }
-    return jump * row_sum * (s.k > 0 ? s.k : 1.0 / ybar) * s.brightness;
+        // frac() jumps by 1 at 1, 2, ...; at 0 it is continuous (the argument is never negative).
+        const bool on_jump = std::round(cycles) >= 1.0 && std::abs(cycles - std::round(cycles)) < 4e-6 * cycles;
+        return on_jump ? spectral::packed_value(*s.spectra, light, nm) : 0.0;
+    });
 }
 
 }  // namespace
