@@ -281,3 +281,22 @@ TEST_CASE("bench prints one JSON line per technique with positive frame times") 
     CHECK(count == 5);
     CHECK(run("bench --size 32x32").exit_code == 2);  // needs an effect
 }
+
+TEST_CASE("spectra lod: nine levels, no error at level 9, bad input exits 2") {
+    const Result r = run("spectra lod TCS09 --json");
+    REQUIRE(r.exit_code == 0);
+    std::vector<nlohmann::json> levels;
+    std::istringstream lines(r.out);
+    for (std::string line; std::getline(lines, line);) levels.push_back(nlohmann::json::parse(line));
+    REQUIRE(levels.size() == 9);
+    CHECK(levels.front()["level"] == 9);
+    CHECK(levels.front()["delta_e_ab"].get<double>() == 0.0);
+    CHECK(levels.front()["support_points"] == 471);
+    CHECK(levels.back()["support_points"] == 3);
+    // Coarser support points drift further from the full sum (levels 9..4, a smooth reflectance).
+    for (size_t i = 1; i < 6; ++i) CHECK(levels[i]["delta_e_ab"].get<double>() > levels[i - 1]["delta_e_ab"].get<double>());
+    CHECK(run("spectra lod --film 400").exit_code == 0);
+    CHECK(run("spectra lod TCS09 --film 400").exit_code == 2);
+    CHECK(run("spectra lod").exit_code == 2);
+    CHECK(run("spectra lod TCS09 --lower 300").exit_code == 2);
+}

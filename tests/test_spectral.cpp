@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "spectral/colorimetry.hpp"
 #include "spectral/generators.hpp"
+#include "spectral/level_of_detail.hpp"
 #include "spectral/library.hpp"
 #include "spectral/packing.hpp"
 #include "spectral/spectral_files.hpp"
@@ -173,4 +174,38 @@ TEST_CASE("packed spectrum textures round-trip: float exact, 8-bit within half a
     CHECK(cmf_value(cmf, 1, 600)[0] == doctest::Approx(cie1964().x[600]).epsilon(1e-7));
     const PackedTexture cmf8 = cmf_texture(cie1931(), cie1964(), texture::PixelFormat::RGBA8);
     CHECK(cmf8.scale == doctest::Approx(std::max(cie1931().z.max(), cie1964().z.max())));  // the zbar peak
+}
+
+TEST_CASE("CIELAB: the white is L* = 100, sRGB red has its published coordinates") {
+    const Vec3 d65_white{0.95047, 1.0, 1.08883};
+    const Vec3 white = xyz_to_lab(d65_white, d65_white);
+    CHECK(white[0] == doctest::Approx(100.0).epsilon(1e-12));
+    CHECK(std::abs(white[1]) < 1e-12);
+    CHECK(std::abs(white[2]) < 1e-12);
+    // sRGB's red primary (XYZ 0.4124, 0.2126, 0.0193) is L*a*b* = (53.24, 80.09, 67.20) in every
+    // sRGB reference (e.g. Lindbloom's calculator); 0.02 covers the 4-digit XYZ and 2-digit Lab.
+    const Vec3 red = xyz_to_lab({0.4124, 0.2126, 0.0193}, d65_white);
+    CHECK(red[0] == doctest::Approx(53.24).epsilon(0.02 / 53.24));
+    CHECK(red[1] == doctest::Approx(80.09).epsilon(0.02 / 80.09));
+    CHECK(red[2] == doctest::Approx(67.20).epsilon(0.02 / 67.20));
+    CHECK(delta_e_ab({50, 3, 4}, {50, 0, 0}) == doctest::Approx(5.0).epsilon(1e-15));
+}
+
+TEST_CASE("level of detail: level 9 is the full sum, interpolation is exact at support points") {
+    CHECK(lod_spacing(9) == 1);
+    CHECK(lod_spacing(6) == 8);
+    CHECK(lod_spacing(1) == 256);
+    CHECK_THROWS_AS(lod_spacing(0), fxview::UsageError);
+    const auto square = [](int nm) { return static_cast<double>(nm) * nm; };
+    CHECK(lod_interpolated(square, 400, 360, 830, 8) == 400.0 * 400.0);                             // a support point
+    CHECK(lod_interpolated(square, 372, 360, 830, 8) == doctest::Approx((368.0 * 368 + 376.0 * 376) / 2));  // midway
+    CHECK(lod_interpolated(square, 829, 360, 830, 8) == doctest::Approx((824.0 * 824 * 1 + 830.0 * 830 * 5) / 6));  // last, short interval
+    const SpectralLibrary library = load_library(FXVIEW_SOURCE_SPECTRA_DIR "/library.txt");
+    const Spectrum tcs09 = library.spectra().at(static_cast<size_t>(library.index_of("TCS09"))).spectrum;
+    const Vec3 full = spectrum_to_xyz(tcs09, cie1931());
+    const Vec3 level9 = spectrum_to_xyz_lod(tcs09, cie1931(), 360, 830, 1);
+    for (int c = 0; c < 3; ++c) CHECK(level9[c] == doctest::Approx(full[c]).epsilon(1e-12));
+    // A constant spectrum stays Y = 1 at every level (k follows the interpolated ybar).
+    for (int level = 1; level <= 9; ++level)
+        CHECK(spectrum_to_xyz_lod(Spectrum::constant(1.0), cie1931(), 360, 830, lod_spacing(level))[1] == doctest::Approx(1.0).epsilon(1e-12));
 }

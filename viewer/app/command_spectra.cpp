@@ -10,7 +10,9 @@
 #include "core/error.hpp"
 #include "core/text.hpp"
 #include "image/image_file.hpp"
+#include "optics/thin_film.hpp"
 #include "spectral/colorimetry.hpp"
+#include "spectral/level_of_detail.hpp"
 #include "spectral/library.hpp"
 #include "spectral/packing.hpp"
 
@@ -70,9 +72,11 @@ CommandRunner add_spectra_command(CLI::App& app) {
         int lower = 360, upper = 830, step = 1;
         bool normalise = false;
         std::string size = "900x520";
+        std::string light = "D65";
+        double film_nm = -1;
     };
     auto o = std::make_shared<Options>();
-    CLI::App* spectra = app.add_subcommand("spectra", "Spectral library tools: list, xyz, pack, cmf, plot");
+    CLI::App* spectra = app.add_subcommand("spectra", "Spectral library tools: list, xyz, pack, cmf, plot, lod");
     spectra->require_subcommand(1);
     spectra->add_option("--library", o->library, "Spectral library file")->capture_default_str();
 
@@ -104,7 +108,63 @@ CommandRunner add_spectra_command(CLI::App& app) {
     plot->add_flag("--normalise", o->normalise, "Scale each spectrum to a peak of 1");
     plot->add_option("--size", o->size, "Image size WxH")->capture_default_str();
 
-    return [o, list, xyz, pack, cmf, plot] {
+    // Table 9's question (DOMAIN.md §5): how far each level's colour lies from the full sum, in ΔE*ab
+    // under the light (its white at the same level), for an object reflectance or a thin film.
+    const auto run_lod = [](const Options& opt) {
+        spectral::Spectrum object;
+        std::string object_name;
+        if (opt.film_nm >= 0) {
+            if (!opt.names.empty()) throw UsageError("spectra lod: give a spectrum or --film, not both");
+            for (int nm = spectral::kMinNm; nm <= spectral::kMaxNm; ++nm) object[nm] = optics::bubble_reflectance(1.0, 1.33, opt.film_nm, nm, 1.0);
+            object_name = "soap film " + std::to_string(static_cast<int>(opt.film_nm)) + " nm";
+        } else {
+            if (opt.names.empty()) throw UsageError("spectra lod: give a spectrum or --film");
+            const spectral::NamedSpectrum named = find_spectrum(opt.names.front(), opt.library);
+            object = named.spectrum;
+            object_name = named.name;
+        }
+        if (opt.lower < 360 || opt.upper > 830 || opt.upper - opt.lower < 10)
+            throw UsageError("--lower/--upper must lie in 360..830 nm (the CMF tables), at least 10 nm apart");
+        const spectral::Spectrum light = find_spectrum(opt.light, opt.library).spectrum;
+        const spectral::Observer observer = spectral::load_observer(opt.observer);
+        const auto colour = [&](int spacing) {
+            const spectral::Vec3 white = spectral::spectrum_to_xyz_lod(light, observer, opt.lower, opt.upper, spacing);
+            const spectral::Vec3 xyz = spectral::spectrum_to_xyz_lod(light * object, observer, opt.lower, opt.upper, spacing);
+            return std::pair{xyz, spectral::xyz_to_lab(xyz, white)};
+        };
+        const auto full = colour(1).second;
+        if (!opt.json)
+            std::printf("%s under %s, %s, %d-%d nm\n\n| level | spacing nm | support points | x | y | dE*ab to level 9 |\n"
+                        "| --- | --- | --- | --- | --- | --- |\n",
+                        object_name.c_str(), opt.light.c_str(), observer.name.c_str(), opt.lower, opt.upper);
+        for (int level = spectral::kLodLevels; level >= 1; --level) {
+            const int spacing = spectral::lod_spacing(level);
+            const int points = (opt.upper - opt.lower) / spacing + 1 + ((opt.upper - opt.lower) % spacing != 0 ? 1 : 0);
+            const auto [xyz, lab] = colour(spacing);
+            const auto xy = spectral::chromaticity(xyz);
+            const double error = spectral::delta_e_ab(lab, full);
+            if (opt.json)
+                std::cout << nlohmann::json{{"object", object_name}, {"light", opt.light}, {"level", level}, {"spacing_nm", spacing},
+                                            {"support_points", points}, {"XYZ", xyz}, {"xy", xy}, {"delta_e_ab", error}}
+                                 .dump()
+                          << "\n";
+            else
+                std::printf("| %d | %d | %d | %.4f | %.4f | %.3f |\n", level, spacing, points, xy[0], xy[1], error);
+        }
+        return 0;
+    };
+
+    CLI::App* lod = spectra->add_subcommand("lod", "Colour error of each level of detail (support points every 2^(9-level) nm)");
+    lod->add_option("spectrum", o->names, "Object reflectance: library name, file or source (omit with --film)")->expected(0, 1);
+    lod->add_option("--light", o->light, "Light spectrum")->capture_default_str();
+    lod->add_option("--film", o->film_nm, "Object = a soap film (n = 1.33, in air, normal incidence) this thick, in nm")->check(CLI::Range(0.0, 10000.0));
+    lod->add_option("--observer", o->observer, "1931 (2 degree) or 1964 (10 degree)")->capture_default_str();
+    lod->add_option("--lower", o->lower, "Lowest wavelength (nm)")->capture_default_str();
+    lod->add_option("--upper", o->upper, "Highest wavelength (nm)")->capture_default_str();
+    lod->add_flag("--json", o->json, "Print one JSON object per level");
+
+    return [o, list, xyz, pack, cmf, plot, lod, run_lod] {
+        if (lod->parsed()) return run_lod(*o);
         if (list->parsed()) {
             const spectral::SpectralLibrary library = spectral::load_library(o->library);
             nlohmann::json entries = nlohmann::json::array();

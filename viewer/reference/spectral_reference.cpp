@@ -8,8 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "reference/spectral_integration.hpp"
+#include "spectral/level_of_detail.hpp"
 
 namespace fxview::reference {
 namespace {
@@ -86,6 +88,37 @@ std::map<std::string, Reference> spectral_references() {
     phong_metal.tolerance = 5e-5;
     phong_metal.why = all.at("Phong").why;
     all.emplace("CombinedPhong", std::move(phong_metal));
+
+    // Level of detail (ch. 4.6): CMFs and spectra linearly interpolated between support points
+    // every 2^(9 - level) nm; every nm of the range enters the sum.
+    Reference lod;
+    lod.shade = [](const ShadingInput& in, const ReferenceContext& c) {
+        const SpectralSetup s = spectral_setup(c);
+        const int light_index = static_cast<int>(c.number("LightSpectrum")), object_index = static_cast<int>(c.number("ObjectSpectrum"));
+        const int spacing = spectral::lod_spacing(std::clamp(static_cast<int>(c.number("LodLevel")), 1, spectral::kLodLevels));
+        const Lobes lobe = lobes(in, c.number("Power"));
+        const double diffuse = c.number("Kd") * lobe.lambert, specular = c.number("Ks") * lobe.phong;
+        const auto at_support = [&](const std::function<double(int)>& f, int nm) {
+            return spectral::lod_interpolated(f, nm, s.lower, s.upper, spacing);
+        };
+        spectral::Vec3 xyz{0, 0, 0};
+        double ybar = 0;
+        for (int nm = s.lower; nm <= s.upper; ++nm) {
+            const double light = at_support([&](int at) { return spectral::packed_value(*s.spectra, light_index, at); }, nm);
+            const double object = at_support([&](int at) { return spectral::packed_value(*s.spectra, object_index, at); }, nm);
+            for (int i = 0; i < 3; ++i) {
+                const double cmf = at_support([&](int at) { return spectral::cmf_value(*s.cmf, s.observer, at)[i] * s.cmf_unit; }, nm);
+                xyz[i] += light * (object * diffuse + specular) * cmf;
+                if (i == 1) ybar += cmf;
+            }
+        }
+        const double k = (s.k > 0 ? s.k : 1.0 / ybar) * s.brightness;
+        for (double& v : xyz) v *= k;
+        return to_rgba(xyz, s.mapping);
+    };
+    lod.tolerance = 5e-5;
+    lod.why = all.at("Phong").why;
+    all.emplace("LodPhong", std::move(lod));
     return all;
 }
 
