@@ -42,6 +42,8 @@ run: build
 	$(FXVIEW) compare effects/brdf/analytic.fx --heatmap out/compare-brdf.png
 	$(FXVIEW) render --mesh sphere --size 256x256 --out out/sphere-normals.exr
 	$(FXVIEW) pick --mesh sphere --size 256x256 --at 128,128
+	$(FXVIEW) brdf-grid --model pbr --param base=0.9,0.6,0.3 --param roughness=0.3 --out out/gold-grid.csv
+	$(FXVIEW) fit out/gold-grid.csv --out out/fit-gold.csv --preset out/fit-gold.json --preview out/fit-gold.png
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)

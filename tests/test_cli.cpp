@@ -300,3 +300,31 @@ TEST_CASE("spectra lod: nine levels, no error at level 9, bad input exits 2") {
     CHECK(run("spectra lod").exit_code == 2);
     CHECK(run("spectra lod TCS09 --lower 300").exit_code == 2);
 }
+
+TEST_CASE("brdf-grid and fit: synthetic data of the fit model come back as its parameters") {
+    const std::string data = temp_path("fit/synthetic.csv"), preset = temp_path("fit/preset.json"), preview = temp_path("fit/preview.png");
+    REQUIRE(run("brdf-grid --model ashikhmin-fit --param cd=0.1,0.2,0.3 --param cs=0.5,0.4,0.3 --param ns=60 --out " + data).exit_code == 0);
+    const Result r = run("fit " + data + " --json --preset " + preset + " --preview " + preview);
+    REQUIRE(r.exit_code == 0);
+    const auto json = nlohmann::json::parse(r.out);
+    CHECK(json["ns"].get<double>() == doctest::Approx(60.0).epsilon(1e-6));  // exact data: exact fit
+    CHECK(json["cs"][0].get<double>() == doctest::Approx(0.5).epsilon(1e-6));
+    CHECK(json["cd"][2].get<double>() == doctest::Approx(0.3).epsilon(1e-6));
+    CHECK(json["error_rgb"].get<double>() < 1e-6);
+    CHECK(std::filesystem::file_size(preview) > 1000);
+    // The preset renders the fitted BRDF with effects/brdf/analytic.fx.
+    CHECK(run(std::string("render ") + FXVIEW_SOURCE_EFFECTS_DIR + "/brdf/analytic.fx --preset " + preset + " --size 32x32 --out " +
+              temp_path("fit/render.png"))
+              .exit_code == 0);
+}
+
+TEST_CASE("fit and brdf-grid reject bad input: exit 2 for arguments, 1 naming file and line for data") {
+    CHECK(run("brdf-grid --model nonsense --out " + temp_path("x.csv")).exit_code == 2);
+    CHECK(run("brdf-grid --model pbr --param shininess=3 --out " + temp_path("x.csv")).exit_code == 2);
+    CHECK(run("fit " + temp_path("x.csv") + " --limit 95").exit_code == 2);
+    const std::string broken = temp_path("broken-grid.csv");
+    std::ofstream(broken) << "theta_in_deg,theta_out_deg,phi_out_deg,r,g,b\n0,0,0,1,1\n";
+    const Result r = run("fit " + broken);
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("broken-grid.csv:2:") != std::string::npos);
+}

@@ -128,4 +128,8 @@ TEST_CASE("fitting another model's data: a finite error that the fit reduces, ne
     CHECK(fit.ns > 10);
     CHECK(fit.cs[0] > fit.cs[2]);  // gold-like: more red than blue in the highlight
     CHECK_THROWS_AS(fit::fit_ashikhmin_shirley(data, {.limit_deg = 0}), UsageError);
+    // Without a limit the grazing samples enter (the light at 90° only with weight 0, left out): still finite.
+    const fit::FitResult all = fit::fit_ashikhmin_shirley(data, {.limit_deg = 90});
+    CHECK(std::isfinite(all.error_rgb));
+    CHECK(all.ns > 0);
 }

@@ -18,5 +18,7 @@ CommandRunner add_check_command(CLI::App& app);
 CommandRunner add_spectra_command(CLI::App& app);
 CommandRunner add_compare_command(CLI::App& app);
 CommandRunner add_bench_command(CLI::App& app);
+CommandRunner add_fit_command(CLI::App& app);
+CommandRunner add_brdf_grid_command(CLI::App& app);
 
 }  // namespace fxview::app

@@ -24,6 +24,8 @@ int main(int argc, char** argv) {
         {"compare", app::add_compare_command(app)},
         {"view", ui::add_view_command(app)},
         {"bench", app::add_bench_command(app)},
+        {"fit", app::add_fit_command(app)},
+        {"brdf-grid", app::add_brdf_grid_command(app)},
     };
     if (argc > 1 && argv[1][0] != '-' && !runners.contains(argv[1])) {
         std::cerr << "fxview: unknown command '" << argv[1] << "' (expected view, render, pick, info, list, check, spectra, compare or bench)\n";

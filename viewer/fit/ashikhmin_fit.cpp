@@ -25,8 +25,9 @@ std::vector<Sample> samples_inside(const BrdfGrid& grid, double limit_deg) {
     for (double x : w) sum += x;
     std::vector<Sample> samples;
     for (size_t i = 0; i < grid.theta_in.size(); ++i) {
-        if (grid.theta_in[i] > limit_deg) continue;
         const glm::dvec3 l = grid.light(i);
+        // Light at the horizon: weight cos θi = 0, and the lobe's max(n·l, n·v) may be 0 too (0 · ∞).
+        if (grid.theta_in[i] > limit_deg || l.z < 1e-9) continue;
         for (size_t o = 0; o < grid.theta_out.size(); ++o)
             for (size_t p = 0; p < grid.phi_out.size(); ++p) {
                 const double weight = w[o * grid.phi_out.size() + p];

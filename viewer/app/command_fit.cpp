@@ -1,0 +1,209 @@
+// `fxview fit` (seed 000's fitter: Ashikhmin-Shirley to a measured grid) and `fxview brdf-grid`
+// (synthetic "measurements" of an analytic model on the thesis' grid, the thesis' way of checking
+// its Levenberg-Marquardt).
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <random>
+
+#include "app/commands.hpp"
+#include "app/fit_preview.hpp"
+#include "app/value_parsing.hpp"
+#include "brdf/models.hpp"
+#include "core/error.hpp"
+#include "fit/ashikhmin_fit.hpp"
+#include "image/image_file.hpp"
+
+namespace fxview::app {
+namespace {
+
+void create_parent(const std::string& path) {
+    const std::filesystem::path p(path);
+    if (!p.parent_path().empty()) std::filesystem::create_directories(p.parent_path());
+}
+
+void write_result_csv(const fit::FitResult& r, const std::string& path) {
+    create_parent(path);
+    std::ofstream out(path);
+    if (!out) throw Error(path + ": cannot write");
+    out.precision(10);
+    out << "# Ashikhmin-Shirley fit (seed 000 eq. 4.28): f = cd/pi + (ns+1)/(8 pi) (n.h)^ns / ((h.v) max(n.l, n.v)) cs\n";
+    out << "parameter,r,g,b\n";
+    out << "cd," << r.cd[0] << ',' << r.cd[1] << ',' << r.cd[2] << '\n';
+    out << "cs," << r.cs[0] << ',' << r.cs[1] << ',' << r.cs[2] << '\n';
+    out << "ns," << r.ns << ',' << r.ns << ',' << r.ns << '\n';
+    out << "# renderer form (eq. 4.23/4.24): f = (1 - Rs) Rd/pi + Rs cs' lobe\n";
+    out << "Rs," << r.rs << ',' << r.rs << ',' << r.rs << '\n';
+    out << "Rd," << r.rd_renderer[0] << ',' << r.rd_renderer[1] << ',' << r.rd_renderer[2] << '\n';
+    out << "cs_renderer," << r.cs_renderer[0] << ',' << r.cs_renderer[1] << ',' << r.cs_renderer[2] << '\n';
+    out << "error_rgb," << r.error_rgb << ',' << r.error_rgb << ',' << r.error_rgb << '\n';
+    if (!out) throw Error(path + ": write failed");
+}
+
+// A preset for effects/brdf/analytic.fx: the fitted BRDF in the viewer (technique AshikhminShirleyFit).
+void write_preset(const fit::FitResult& r, const std::string& path) {
+    create_parent(path);
+    std::ofstream out(path);
+    if (!out) throw Error(path + ": cannot write");
+    out << nlohmann::json{{"effect", "effects/brdf/analytic.fx"},
+                          {"technique", "AshikhminShirleyFit"},
+                          {"parameters", {{"FitDiffuse", r.cd}, {"FitSpecular", r.cs}, {"FitExponent", r.ns}}}}
+               .dump(2)
+        << "\n";
+}
+
+std::array<double, 3> rgb(const glm::dvec3& v) { return {v.r, v.g, v.b}; }
+
+// Analytic models by name with KEY=VALUE parameters (colours as r,g,b or one value).
+std::function<std::array<double, 3>(const glm::dvec3&, const glm::dvec3&)> analytic_model(const std::string& name,
+                                                                                        const std::vector<std::string>& params) {
+    std::map<std::string, std::vector<double>> values;
+    for (const auto& p : params) {
+        const auto eq = p.find('=');
+        if (eq == std::string::npos) throw UsageError("--param: expected KEY=VALUE, got '" + p + "'");
+        const std::string text = p.substr(eq + 1);
+        const auto count = static_cast<size_t>(std::count(text.begin(), text.end(), ',') + 1);
+        const auto floats = parse_floats("--param " + p.substr(0, eq), text, count);
+        values[p.substr(0, eq)] = std::vector<double>(floats.begin(), floats.end());
+    }
+    std::vector<std::string> used;
+    const auto number = [&](const std::string& key, double fallback) {
+        used.push_back(key);
+        const auto found = values.find(key);
+        return found == values.end() ? fallback : found->second.at(0);
+    };
+    const auto colour = [&](const std::string& key, glm::dvec3 fallback) {
+        used.push_back(key);
+        const auto found = values.find(key);
+        if (found == values.end()) return fallback;
+        const auto& v = found->second;
+        if (v.size() == 1) return glm::dvec3(v[0]);
+        if (v.size() != 3) throw UsageError("--param " + key + ": expected one value or r,g,b");
+        return glm::dvec3(v[0], v[1], v[2]);
+    };
+    const brdf::Directions frame{{0, 0, 1}, {}, {}, {1, 0, 0}};
+    std::function<std::array<double, 3>(const glm::dvec3&, const glm::dvec3&)> f;
+    if (name == "ashikhmin-fit") {
+        brdf::AshikhminShirleyFit m{colour("cd", glm::dvec3(0.2)), colour("cs", glm::dvec3(0.2)), number("ns", 50)};
+        f = [=](const glm::dvec3& l, const glm::dvec3& v) { return rgb(brdf::evaluate(m, {frame.n, l, v, frame.t})); };
+    } else if (name == "ashikhmin-shirley") {
+        brdf::AshikhminShirley m{colour("rd", glm::dvec3(0.5)), colour("rs", glm::dvec3(0.05)), number("nu", 100), number("nv", 100)};
+        f = [=](const glm::dvec3& l, const glm::dvec3& v) { return rgb(brdf::evaluate(m, {frame.n, l, v, frame.t})); };
+    } else if (name == "pbr") {
+        brdf::MetallicRoughness m{colour("base", {1.0, 0.71, 0.29}), number("metallic", 1), number("roughness", 0.4)};
+        f = [=](const glm::dvec3& l, const glm::dvec3& v) { return rgb(brdf::evaluate(m, {frame.n, l, v, frame.t})); };
+    } else if (name == "phong") {
+        brdf::ModifiedPhong m{colour("kd", glm::dvec3(0.5)), number("ks", 0.4), number("n", 40)};
+        f = [=](const glm::dvec3& l, const glm::dvec3& v) { return rgb(brdf::evaluate(m, {frame.n, l, v, frame.t})); };
+    } else if (name == "cook-torrance") {
+        brdf::CookTorranceBeckmann m{colour("kd", glm::dvec3(0.4)), number("ks", 1), number("m", 0.3), number("eta", 1.5), false};
+        f = [=](const glm::dvec3& l, const glm::dvec3& v) { return rgb(brdf::evaluate(m, {frame.n, l, v, frame.t})); };
+    } else {
+        throw UsageError("--model: unknown model '" + name + "' (ashikhmin-fit, ashikhmin-shirley, pbr, phong, cook-torrance)");
+    }
+    for (const auto& [key, value] : values)
+        if (std::find(used.begin(), used.end(), key) == used.end()) throw UsageError("--param: model " + name + " has no parameter '" + key + "'");
+    return f;
+}
+
+}  // namespace
+
+CommandRunner add_fit_command(CLI::App& app) {
+    struct Options {
+        std::string data, out, preset, preview, progress;
+        fit::FitOptions fit;
+        PreviewOptions preview_options;
+        bool json = false;
+    };
+    auto o = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand("fit", "Fit the Ashikhmin-Shirley model to a measured BRDF grid (seed 000)");
+    command->add_option("data", o->data, "BRDF grid (CSV: theta_in_deg,theta_out_deg,phi_out_deg,r,g,b)")->required();
+    command->add_option("--limit", o->fit.limit_deg, "Leave out light and camera angles beyond this (degrees)")
+        ->capture_default_str()->check(CLI::Range(5.0, 90.0));
+    command->add_option("--iterations", o->fit.iterations, "Levenberg-Marquardt iterations of stage 1")
+        ->capture_default_str()->check(CLI::Range(1, 100000));
+    command->add_option("--start-ns", o->fit.start_ns, "Starting exponent (the thesis starts low: 25-50)")->capture_default_str();
+    command->add_option("--start-cd", o->fit.start_cd, "Starting diffuse weight")->capture_default_str();
+    command->add_option("--start-cs", o->fit.start_cs, "Starting specular weight")->capture_default_str();
+    command->add_option("--out,-o", o->out, "Write the parameters as CSV");
+    command->add_option("--preset", o->preset, "Write a preset of effects/brdf/analytic.fx (technique AshikhminShirleyFit)");
+    command->add_option("--preview", o->preview, "Write measured | model | difference as an image (PNG, EXR, PFM)");
+    command->add_option("--brighten", o->preview_options.brighten, "Preview: multiply values by this")->capture_default_str();
+    command->add_option("--gamma", o->preview_options.gamma, "Preview: raise values to 1/gamma")->capture_default_str()->check(CLI::Range(0.1, 10.0));
+    command->add_option("--progress", o->progress, "Write the error number e per iteration as CSV (fig. 5.2)");
+    command->add_flag("--json", o->json, "Print the result as JSON");
+    return [o] {
+        const fit::BrdfGrid measured = fit::read_brdf_grid(o->data);
+        const auto start = std::chrono::steady_clock::now();
+        const fit::FitResult r = fit::fit_ashikhmin_shirley(measured, o->fit);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (!o->out.empty()) write_result_csv(r, o->out);
+        if (!o->preset.empty()) write_preset(r, o->preset);
+        if (!o->preview.empty()) {
+            create_parent(o->preview);
+            image::write_image(o->preview, fit_preview(measured, fit::evaluate_fit(measured, r), o->preview_options));
+        }
+        if (!o->progress.empty()) {
+            create_parent(o->progress);
+            std::ofstream out(o->progress);
+            out << "iteration,e\n";
+            for (size_t i = 0; i < r.error_per_iteration.size(); ++i) out << i + 1 << ',' << r.error_per_iteration[i] << '\n';
+            if (!out) throw Error(o->progress + ": cannot write");
+        }
+        if (o->json) {
+            std::cout << nlohmann::json{{"data", o->data}, {"samples_used", r.samples_used}, {"limit_deg", o->fit.limit_deg},
+                                        {"iterations", o->fit.iterations}, {"accepted_steps", r.stage1.accepted},
+                                        {"ns", r.ns}, {"cd", r.cd}, {"cs", r.cs}, {"mono_cd", r.mono_cd}, {"mono_cs", r.mono_cs},
+                                        {"rs", r.rs}, {"rd_renderer", r.rd_renderer}, {"cs_renderer", r.cs_renderer},
+                                        {"error_mono", r.error_mono}, {"error_rgb", r.error_rgb}, {"seconds", seconds}}
+                             .dump()
+                      << "\n";
+        } else {
+            std::printf("%s: %d directions inside %.0f deg, %d iterations (%d steps accepted), %.2f s\n", o->data.c_str(), r.samples_used,
+                        o->fit.limit_deg, o->fit.iterations, r.stage1.accepted, seconds);
+            std::printf("stage 1 (mean of RGB): ns %.4f  cd %.6f  cs %.6f  e %.6g\n", r.ns, r.mono_cd, r.mono_cs, r.error_mono);
+            std::printf("stage 2 (per channel): cd %.6f %.6f %.6f  cs %.6f %.6f %.6f  e %.6g\n", r.cd[0], r.cd[1], r.cd[2], r.cs[0],
+                        r.cs[1], r.cs[2], r.error_rgb);
+            std::printf("renderer form: Rs %.6f  Rd %.6f %.6f %.6f  cs' %.6f %.6f %.6f\n", r.rs, r.rd_renderer[0], r.rd_renderer[1],
+                        r.rd_renderer[2], r.cs_renderer[0], r.cs_renderer[1], r.cs_renderer[2]);
+        }
+        return 0;
+    };
+}
+
+CommandRunner add_brdf_grid_command(CLI::App& app) {
+    struct Options {
+        std::string model = "ashikhmin-fit", out;
+        std::vector<std::string> params;
+        double noise = 0;
+        unsigned seed = 1;
+    };
+    auto o = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand("brdf-grid", "Tabulate an analytic BRDF on the thesis' measurement grid (synthetic data for fit)");
+    command->add_option("--model", o->model, "ashikhmin-fit, ashikhmin-shirley, pbr, phong or cook-torrance")->capture_default_str();
+    command->add_option("--param", o->params, "KEY=VALUE, colours as r,g,b (e.g. --param cs=0.5,0.4,0.3 --param ns=80)");
+    command->add_option("--noise", o->noise, "Relative Gaussian noise on every value (e.g. 0.02)")->check(CLI::Range(0.0, 1.0));
+    command->add_option("--seed", o->seed, "Noise seed (the same seed gives the same file)")->capture_default_str();
+    command->add_option("--out,-o", o->out, "CSV file")->required();
+    return [o] {
+        const auto f = analytic_model(o->model, o->params);
+        std::mt19937 random(o->seed);
+        std::normal_distribution<double> gauss(0.0, 1.0);
+        fit::BrdfGrid grid = fit::tabulate(fit::thesis_grid(), f);
+        if (o->noise > 0)
+            for (auto& v : grid.values)
+                for (double& c : v) c *= 1.0 + o->noise * gauss(random);
+        create_parent(o->out);
+        fit::write_brdf_grid(grid, o->out);
+        std::cout << "wrote " << o->out << " (" << grid.size() << " directions, model " << o->model << ")\n";
+        return 0;
+    };
+}
+
+}  // namespace fxview::app
