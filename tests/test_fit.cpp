@@ -3,7 +3,9 @@
 // own validation: synthetic BRDFs made with the model itself must be fitted with zero error.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <numbers>
 
@@ -11,6 +13,7 @@
 #include "core/error.hpp"
 #include "fit/ashikhmin_fit.hpp"
 #include "fit/brdf_grid.hpp"
+#include "fit/merl.hpp"
 #include "test_support.hpp"
 
 using namespace fxview;
@@ -132,4 +135,52 @@ TEST_CASE("fitting another model's data: a finite error that the fit reduces, ne
     const fit::FitResult all = fit::fit_ashikhmin_shirley(data, {.limit_deg = 90});
     CHECK(std::isfinite(all.error_rgb));
     CHECK(all.ns > 0);
+}
+
+TEST_CASE("MERL binary BRDFs: the reference reader's bins, scales and errors") {
+    const auto deg = [](double d) { return d * kPi / 180.0; };
+    const auto dir = [&](double theta, double phi) {
+        return glm::dvec3(std::sin(deg(theta)) * std::cos(deg(phi)), std::sin(deg(theta)) * std::sin(deg(phi)), std::cos(deg(theta)));
+    };
+    // Bins worked out by hand from BRDFRead.cpp's formulas (θh index = floor(sqrt(θh/90° · 8100)),
+    // θd index = floor(θd / 1°), φd index = floor(φd / 1°) after folding into [0°, 180°)):
+    // light = view at 40.5°: θh = 40.5° → sqrt(3645) = 60.4; θd = 0.
+    CHECK(fit::merl_bins(dir(40.5, 0), dir(40.5, 0)) == std::array<int, 3>{60, 0, 0});
+    // Mirror pair at 30.5°: h = n (θh = 0), the difference vector is the light itself: θd = 30.5°,
+    // φd = 180° → clamped to the last bin.
+    const double s = std::sin(deg(30.5)), c = std::cos(deg(30.5));  // exact zeros in y: h is exactly n
+    CHECK(fit::merl_bins({-s, 0, c}, {s, 0, c}) == std::array<int, 3>{0, 30, 179});
+    // Light along n, view at 50.3° towards +y: θh = θd = 25.15° → sqrt(2263.5) = 47.6 and 25.
+    CHECK(fit::merl_bins(dir(0, 0), dir(50.3, 90)) == std::array<int, 3>{47, 25, 179});
+
+    // A file whose every bin holds one colour reads back as that colour in 1/sr after the scales.
+    fit::MerlBrdf constant;
+    const size_t n = 90 * 90 * 180;
+    constant.data.assign(3 * n, 0.0);
+    std::fill(constant.data.begin(), constant.data.begin() + n, 0.3 * 1500.0);
+    std::fill(constant.data.begin() + n, constant.data.begin() + 2 * n, 0.2 * 1500.0 / 1.15);
+    std::fill(constant.data.begin() + 2 * n, constant.data.end(), 0.1 * 1500.0 / 1.66);
+    const std::string path = test::temp_path("constant.binary");
+    fit::write_merl(constant, path);
+    const fit::BrdfGrid grid = fit::merl_to_grid(fit::read_merl(path), fit::thesis_grid());
+    CHECK(grid.values[1234][0] == doctest::Approx(0.3).epsilon(1e-14));
+    CHECK(grid.values[1234][1] == doctest::Approx(0.2).epsilon(1e-14));
+    CHECK(grid.values[1234][2] == doctest::Approx(0.1).epsilon(1e-14));
+    // A Lambertian MERL file is fitted as cd = π f, cs = 0.
+    const fit::FitResult lambert = fit::fit_ashikhmin_shirley(grid, {});
+    CHECK(lambert.cd[0] == doctest::Approx(0.3 * kPi).epsilon(1e-6));
+    CHECK(std::abs(lambert.cs[0]) < 1e-6);
+
+    // Wrong header, truncation: errors name the file.
+    const std::string bad = test::temp_path("bad.binary");
+    { std::ofstream(bad, std::ios::binary).write("\x01\x00\x00\x00\x02\x00\x00\x00\x03\x00\x00\x00", 12); }
+    CHECK_THROWS_WITH_AS(fit::read_merl(bad), doctest::Contains("bad.binary: not a MERL BRDF"), Error);
+    const std::string truncated = test::temp_path("truncated.binary");
+    {
+        std::ofstream out(truncated, std::ios::binary);
+        const std::int32_t dims[3] = {90, 90, 180};
+        out.write(reinterpret_cast<const char*>(dims), sizeof dims);
+        out.write(reinterpret_cast<const char*>(constant.data.data()), 1000 * sizeof(double));
+    }
+    CHECK_THROWS_WITH_AS(fit::read_merl(truncated), doctest::Contains("truncated.binary: truncated"), Error);
 }

@@ -18,6 +18,8 @@
 #include "brdf/models.hpp"
 #include "core/error.hpp"
 #include "fit/ashikhmin_fit.hpp"
+#include "fit/merl.hpp"
+#include "core/text.hpp"
 #include "image/image_file.hpp"
 
 namespace fxview::app {
@@ -59,6 +61,12 @@ void write_preset(const fit::FitResult& r, const std::string& path) {
 }
 
 std::array<double, 3> rgb(const glm::dvec3& v) { return {v.r, v.g, v.b}; }
+
+// A grid file, or a MERL .binary sampled on the thesis' grid.
+fit::BrdfGrid read_measurement(const std::string& path) {
+    if (lower_extension(path) == ".binary") return fit::merl_to_grid(fit::read_merl(path), fit::thesis_grid());
+    return fit::read_brdf_grid(path);
+}
 
 // Analytic models by name with KEY=VALUE parameters (colours as r,g,b or one value).
 std::function<std::array<double, 3>(const glm::dvec3&, const glm::dvec3&)> analytic_model(const std::string& name,
@@ -123,7 +131,7 @@ CommandRunner add_fit_command(CLI::App& app) {
     };
     auto o = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("fit", "Fit the Ashikhmin-Shirley model to a measured BRDF grid (seed 000)");
-    command->add_option("data", o->data, "BRDF grid (CSV: theta_in_deg,theta_out_deg,phi_out_deg,r,g,b)")->required();
+    command->add_option("data", o->data, "BRDF grid (CSV: theta_in_deg,theta_out_deg,phi_out_deg,r,g,b) or MERL .binary")->required();
     command->add_option("--limit", o->fit.limit_deg, "Leave out light and camera angles beyond this (degrees)")
         ->capture_default_str()->check(CLI::Range(5.0, 90.0));
     command->add_option("--iterations", o->fit.iterations, "Levenberg-Marquardt iterations of stage 1")
@@ -139,7 +147,7 @@ CommandRunner add_fit_command(CLI::App& app) {
     command->add_option("--progress", o->progress, "Write the error number e per iteration as CSV (fig. 5.2)");
     command->add_flag("--json", o->json, "Print the result as JSON");
     return [o] {
-        const fit::BrdfGrid measured = fit::read_brdf_grid(o->data);
+        const fit::BrdfGrid measured = read_measurement(o->data);
         const auto start = std::chrono::steady_clock::now();
         const fit::FitResult r = fit::fit_ashikhmin_shirley(measured, o->fit);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -179,7 +187,7 @@ CommandRunner add_fit_command(CLI::App& app) {
 
 CommandRunner add_brdf_grid_command(CLI::App& app) {
     struct Options {
-        std::string model = "ashikhmin-fit", out;
+        std::string model = "ashikhmin-fit", out, merl;
         std::vector<std::string> params;
         double noise = 0;
         unsigned seed = 1;
@@ -190,18 +198,19 @@ CommandRunner add_brdf_grid_command(CLI::App& app) {
     command->add_option("--param", o->params, "KEY=VALUE, colours as r,g,b (e.g. --param cs=0.5,0.4,0.3 --param ns=80)");
     command->add_option("--noise", o->noise, "Relative Gaussian noise on every value (e.g. 0.02)")->check(CLI::Range(0.0, 1.0));
     command->add_option("--seed", o->seed, "Noise seed (the same seed gives the same file)")->capture_default_str();
+    command->add_option("--merl", o->merl, "Sample a MERL .binary file instead of a model");
     command->add_option("--out,-o", o->out, "CSV file")->required();
     return [o] {
-        const auto f = analytic_model(o->model, o->params);
         std::mt19937 random(o->seed);
         std::normal_distribution<double> gauss(0.0, 1.0);
-        fit::BrdfGrid grid = fit::tabulate(fit::thesis_grid(), f);
+        fit::BrdfGrid grid = o->merl.empty() ? fit::tabulate(fit::thesis_grid(), analytic_model(o->model, o->params))
+                                             : fit::merl_to_grid(fit::read_merl(o->merl), fit::thesis_grid());
         if (o->noise > 0)
             for (auto& v : grid.values)
                 for (double& c : v) c *= 1.0 + o->noise * gauss(random);
         create_parent(o->out);
         fit::write_brdf_grid(grid, o->out);
-        std::cout << "wrote " << o->out << " (" << grid.size() << " directions, model " << o->model << ")\n";
+        std::cout << "wrote " << o->out << " (" << grid.size() << " directions, " << (o->merl.empty() ? "model " + o->model : o->merl) << ")\n";
         return 0;
     };
 }

@@ -1,0 +1,78 @@
+#include "fit/merl.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <numbers>
+
+#include "core/error.hpp"
+
+namespace fxview::fit {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr size_t kCount = static_cast<size_t>(kMerlThetaH) * kMerlThetaD * kMerlPhiD;
+constexpr std::array<double, 3> kScale{1.0 / 1500.0, 1.15 / 1500.0, 1.66 / 1500.0};
+
+// Rotation of v about a unit axis by angle (Rodrigues), as BRDFRead.cpp's rotate_vector.
+glm::dvec3 rotate(const glm::dvec3& v, const glm::dvec3& axis, double angle) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    return v * c + axis * glm::dot(v, axis) * (1.0 - c) + glm::cross(axis, v) * s;
+}
+
+}  // namespace
+
+std::array<int, 3> merl_bins(const glm::dvec3& l, const glm::dvec3& v) {
+    const glm::dvec3 half = glm::normalize(l + v);
+    const double theta_half = std::acos(std::clamp(half.z, -1.0, 1.0));
+    const double phi_half = std::atan2(half.y, half.x);
+    const glm::dvec3 diff = rotate(rotate(l, {0, 0, 1}, -phi_half), {0, 1, 0}, -theta_half);
+    const double theta_diff = std::acos(std::clamp(diff.z, -1.0, 1.0));
+    double phi_diff = std::atan2(diff.y, diff.x);
+    if (phi_diff < 0) phi_diff += kPi;  // reciprocity: φd and φd + π are the same sample
+    int h = 0;
+    if (theta_half > 0) h = static_cast<int>(std::sqrt(theta_half / (kPi / 2) * kMerlThetaH * kMerlThetaH));
+    const int d = static_cast<int>(theta_diff / (kPi / 2) * kMerlThetaD);
+    const int p = static_cast<int>(phi_diff / kPi * kMerlPhiD);
+    return {std::clamp(h, 0, kMerlThetaH - 1), std::clamp(d, 0, kMerlThetaD - 1), std::clamp(p, 0, kMerlPhiD - 1)};
+}
+
+std::array<double, 3> MerlBrdf::lookup(const glm::dvec3& l, const glm::dvec3& v) const {
+    const auto [h, d, p] = merl_bins(l, v);
+    const size_t index = static_cast<size_t>(p) + static_cast<size_t>(d) * kMerlPhiD + static_cast<size_t>(h) * kMerlPhiD * kMerlThetaD;
+    std::array<double, 3> rgb{};
+    for (size_t c = 0; c < 3; ++c) rgb[c] = std::max(data[index + c * kCount] * kScale[c], 0.0);  // negative: not measured
+    return rgb;
+}
+
+MerlBrdf read_merl(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path + ": cannot open");
+    std::int32_t dims[3] = {};
+    in.read(reinterpret_cast<char*>(dims), sizeof dims);
+    if (!in || dims[0] * dims[1] * dims[2] != static_cast<std::int32_t>(kCount))
+        throw Error(path + ": not a MERL BRDF (dimensions " + std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " +
+                    std::to_string(dims[2]) + ", expected 90 x 90 x 180)");
+    MerlBrdf merl;
+    merl.data.resize(3 * kCount);
+    in.read(reinterpret_cast<char*>(merl.data.data()), static_cast<std::streamsize>(merl.data.size() * sizeof(double)));
+    if (!in) throw Error(path + ": truncated (a MERL BRDF holds 3 x 1 458 000 doubles after the header)");
+    for (double v : merl.data)
+        if (!std::isfinite(v)) throw Error(path + ": holds a value that is not a finite number");
+    return merl;
+}
+
+void write_merl(const MerlBrdf& merl, const std::string& path) {
+    std::ofstream out(path, std::ios::binary);
+    const std::int32_t dims[3] = {kMerlThetaH, kMerlThetaD, kMerlPhiD};
+    out.write(reinterpret_cast<const char*>(dims), sizeof dims);
+    out.write(reinterpret_cast<const char*>(merl.data.data()), static_cast<std::streamsize>(merl.data.size() * sizeof(double)));
+    if (!out) throw Error(path + ": cannot write");
+}
+
+BrdfGrid merl_to_grid(const MerlBrdf& merl, const BrdfGrid& grid) {
+    return tabulate(grid, [&](const glm::dvec3& l, const glm::dvec3& v) { return merl.lookup(l, v); });
+}
+
+}  // namespace fxview::fit
