@@ -122,3 +122,29 @@ TEST_CASE("a cube map becomes the skybox behind the objects") {
     CHECK(texel(after, 1, 1)[2] > 0.3f);
     CHECK(texel(after, 48, 48) == texel(before, 48, 48));
 }
+
+TEST_CASE("the Fit tab's fit shows the fitted BRDF: the same pixel as fxview pick with fit's preset") {
+    const std::string grid = temp_path("viewer-fit/grid.csv"), preset = temp_path("viewer-fit/preset.json");
+    REQUIRE(run("brdf-grid --model ashikhmin-fit --param cd=0.3,0.1,0.1 --param cs=0.6,0.5,0.4 --param ns=30 --out " + grid).exit_code == 0);
+    REQUIRE(run("fit " + grid + " --preset " + preset).exit_code == 0);
+    const std::string script = temp_path("viewer-fit.txt"), broken = temp_path("viewer-fit/missing.csv");
+    std::ofstream(script) << "fit " << grid << "\npick 64 64\n";
+    const std::string analytic = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/analytic.fx";
+    const Result r = run("view " + analytic + " --render-size 128x128 --script " + script + " --frames 2");
+    REQUIRE(r.exit_code == 0);
+    std::istringstream lines(r.out);
+    std::string fit_line, pick_line;
+    std::getline(lines, fit_line);
+    std::getline(lines, pick_line);
+    const auto fitted = nlohmann::json::parse(fit_line)["fit"];
+    CHECK(fitted["ns"].get<double>() == doctest::Approx(30.0).epsilon(1e-6));
+    const Result cli = run("pick " + analytic + " --preset " + preset + " --size 128x128 --at 64,64 --json");
+    REQUIRE(cli.exit_code == 0);
+    CHECK(nlohmann::json::parse(pick_line)["rgba"] == nlohmann::json::parse(cli.out)["rgba"]);
+
+    // A missing file: the script reports it (exit 1), the viewer does not crash.
+    std::ofstream(script) << "fit " << broken << "\n";
+    const Result failed = run("view " + analytic + " --render-size 64x64 --script " + script + " --frames 2");
+    CHECK(failed.exit_code == 1);
+    CHECK(failed.err.find("missing.csv: cannot open") != std::string::npos);
+}

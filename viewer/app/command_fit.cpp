@@ -18,8 +18,8 @@
 #include "brdf/models.hpp"
 #include "core/error.hpp"
 #include "fit/ashikhmin_fit.hpp"
+#include "fit/measurement.hpp"
 #include "fit/merl.hpp"
-#include "core/text.hpp"
 #include "image/image_file.hpp"
 
 namespace fxview::app {
@@ -62,11 +62,6 @@ void write_preset(const fit::FitResult& r, const std::string& path) {
 
 std::array<double, 3> rgb(const glm::dvec3& v) { return {v.r, v.g, v.b}; }
 
-// A grid file, or a MERL .binary sampled on the thesis' grid.
-fit::BrdfGrid read_measurement(const std::string& path) {
-    if (lower_extension(path) == ".binary") return fit::merl_to_grid(fit::read_merl(path), fit::thesis_grid());
-    return fit::read_brdf_grid(path);
-}
 
 // Analytic models by name with KEY=VALUE parameters (colours as r,g,b or one value).
 std::function<std::array<double, 3>(const glm::dvec3&, const glm::dvec3&)> analytic_model(const std::string& name,
@@ -147,7 +142,7 @@ CommandRunner add_fit_command(CLI::App& app) {
     command->add_option("--progress", o->progress, "Write the error number e per iteration as CSV (fig. 5.2)");
     command->add_flag("--json", o->json, "Print the result as JSON");
     return [o] {
-        const fit::BrdfGrid measured = read_measurement(o->data);
+        const fit::BrdfGrid measured = fit::read_measurement(o->data);
         const auto start = std::chrono::steady_clock::now();
         const fit::FitResult r = fit::fit_ashikhmin_shirley(measured, o->fit);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

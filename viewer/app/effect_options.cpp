@@ -35,7 +35,11 @@ effect::LoadOptions effect_load_options() {
 std::unique_ptr<render::EffectSession> open_effect_session(const EffectOptions& options) {
     auto session = std::make_unique<render::EffectSession>(options.path, effect_load_options(), texture_folders());
     if (!options.technique.empty()) session->select_technique(options.technique);
-    if (!options.preset.empty()) effect::load_preset(options.preset, session->effect(), session->values());
+    if (!options.preset.empty()) {
+        const effect::Preset preset = effect::load_preset(options.preset, session->effect(), session->values());
+        // The preset's technique applies unless the command line names one.
+        if (options.technique.empty() && !preset.technique.empty()) session->select_technique(preset.technique);
+    }
     for (const auto& assignment : options.sets) effect::set_value_from_text(session->effect(), session->values(), assignment);
     if (!session->values().textures.empty()) session->reload_textures();
     return session;

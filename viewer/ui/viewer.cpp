@@ -25,6 +25,7 @@
 #include "scene/shapes.hpp"
 #include "ui/display_pass.hpp"
 #include "ui/imgui_layer.hpp"
+#include "ui/fit_panel.hpp"
 #include "ui/parameter_panel.hpp"
 
 namespace fxview::ui {
@@ -418,6 +419,10 @@ private:
                 draw_view_tab();
                 ImGui::EndTabItem();
             }
+            if (ImGui::BeginTabItem("Fit")) {
+                draw_fit_panel(fit_panel_, session_.get());
+                ImGui::EndTabItem();
+            }
             ImGui::EndTabBar();
         }
         if (!status_.empty()) ImGui::TextDisabled("%s", status_.c_str());
@@ -769,6 +774,12 @@ private:
         } else if (a.verb == "skybox") {
             skybox_name_ = args[0] == "off" ? "" : args[0];
             if (!skybox_name_.empty() && !skybox_texture()) throw UsageError("no cube map texture '" + args[0] + "' in the effect");
+        } else if (a.verb == "fit") {
+            std::snprintf(fit_panel_.path, sizeof fit_panel_.path, "%s", args[0].c_str());
+            if (!run_fit(fit_panel_, session_.get())) throw Error(fit_panel_.error);
+            const fit::FitResult& r = *fit_panel_.result;
+            for (auto& o : objects_) o.technique = session_ ? session_->technique() : o.technique;
+            std::cout << nlohmann::json{{"fit", {{"ns", r.ns}, {"cd", r.cd}, {"cs", r.cs}, {"error_rgb", r.error_rgb}}}}.dump() << std::endl;
         } else if (a.verb == "frames") {
             wait_frames_ = std::max(0, std::stoi(args[0]));
         }
@@ -798,6 +809,7 @@ private:
     int samples_ = 0, sampler_choice_ = 0, frame_number_ = 0, exit_code_ = 0;
     double frame_seconds_ = 0, gpu_ms_ = 0;
     Pick pick_;
+    FitPanelState fit_panel_;
     std::vector<std::string> browser_files_, pending_window_shots_;
     char path_input_[512] = "effects/debug.fx", preset_input_[512] = "preset.json", obj_input_[512] = "model.obj",
          texture_input_[512] = "textures/checker.png", shot_input_[512] = "out/screenshot.png";
