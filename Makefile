@@ -40,6 +40,7 @@ run: build
 	$(FXVIEW) compare effects/spectral/thinfilm.fx --size 96x96 --heatmap out/compare-thinfilm.png
 	$(FXVIEW) compare effects/spectral/cd.fx --mesh disc --camera-rotate 50,0,0 --size 96x96 --heatmap out/compare-cd.png
 	$(FXVIEW) compare effects/brdf/analytic.fx --heatmap out/compare-brdf.png
+	$(FXVIEW) compare effects/examples/textured.fx --mesh torus --heatmap out/compare-textured.png
 	$(FXVIEW) render --mesh sphere --size 256x256 --out out/sphere-normals.exr
 	$(FXVIEW) pick --mesh sphere --size 256x256 --at 128,128
 	$(FXVIEW) brdf-grid --model pbr --param base=0.9,0.6,0.3 --param roughness=0.3 --out out/gold-grid.csv

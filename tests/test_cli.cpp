@@ -262,7 +262,7 @@ TEST_CASE("compare --json: pass with error figures, exit 1 for a CPU-only change
     const Result wrong = run("compare " + effect + " -t Blinn --size 96x96 --json --reference-set Power=8 --heatmap " + heatmap);
     CHECK(wrong.exit_code == 1);
     CHECK(nlohmann::json::parse(wrong.out)["pass"] == false);
-    const Result none = run("compare " + std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/examples/textured.fx -t Mirror --json --heatmap " + heatmap);
+    const Result none = run("compare " + std::string(FXVIEW_TEST_EFFECTS) + "/valid/multipass.fx --json --heatmap " + heatmap);
     CHECK(none.exit_code == 1);
     CHECK(nlohmann::json::parse(none.out)["reference"] == false);
     CHECK(run("compare --size 32x32").exit_code == 2);  // no effect

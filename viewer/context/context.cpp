@@ -80,6 +80,9 @@ void load_gl(GetProcAddressWithState get_proc, void* state, const char* backend_
     if (GLAD_VERSION_MAJOR(version) < 4 || (GLAD_VERSION_MAJOR(version) == 4 && GLAD_VERSION_MINOR(version) < 5))
         throw Error(std::string(backend_label) + ": OpenGL 4.5 core needed, the driver gives " +
                     std::to_string(GLAD_VERSION_MAJOR(version)) + "." + std::to_string(GLAD_VERSION_MINOR(version)));
+    // Cube maps filter across face edges everywhere (GL's default is off): the viewer, the CLI and the
+    // CPU reference then all agree, and no seams show in reflections and skyboxes.
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     if (debug_output && glDebugMessageCallback) {
         glEnable(GL_DEBUG_OUTPUT);
         glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);

@@ -21,17 +21,109 @@ int wrap(int i, int size, GLenum mode) {
     }
 }
 
-glm::dvec4 texel(const texture::TextureData& t, bool srgb, int i, int j) {
+glm::dvec4 texel(const texture::TextureData& t, bool srgb, int i, int j, int face = -1) {
     float rgba[4];
-    // GL row j counts from the bottom; the data keeps the image's top row first.
-    texture::read_texel(t, 0, 0, i, t.height() - 1 - j, rgba);
+    // GL row j counts from the bottom; 2D data keep the image's top row first, cube faces are stored
+    // in GL's order (row 0 is t = 0).
+    if (face < 0) texture::read_texel(t, 0, 0, i, t.height() - 1 - j, rgba);
+    else texture::read_texel(t, face, 0, i, j, rgba);
     glm::dvec4 value(rgba[0], rgba[1], rgba[2], rgba[3]);
     if (srgb)
         for (int c = 0; c < 3; ++c) value[c] = image::srgb_decode(static_cast<float>(value[c]));
     return value;
 }
 
+struct FaceCoordinates {
+    int face;
+    double s, t;
+};
+
+// GL 4.5 core table 8.19: the major axis picks the face, sc / tc / ma its coordinates.
+FaceCoordinates select_face(const glm::dvec3& r) {
+    const glm::dvec3 a = glm::abs(r);
+    double sc, tc, ma;
+    int face;
+    if (a.x >= a.y && a.x >= a.z) {
+        face = r.x > 0 ? 0 : 1;
+        sc = r.x > 0 ? -r.z : r.z;
+        tc = -r.y;
+        ma = a.x;
+    } else if (a.y >= a.z) {
+        face = r.y > 0 ? 2 : 3;
+        sc = r.x;
+        tc = r.y > 0 ? r.z : -r.z;
+        ma = a.y;
+    } else {
+        face = r.z > 0 ? 4 : 5;
+        sc = r.z > 0 ? r.x : -r.x;
+        tc = -r.y;
+        ma = a.z;
+    }
+    return {face, 0.5 * (sc / ma + 1.0), 0.5 * (tc / ma + 1.0)};
+}
+
+// The direction through the centre of texel (i, j) of `face`. A coordinate one texel outside the face
+// is put just across its edge instead, so that re-selecting the face lands on the neighbouring face's
+// edge texel at the same place along the edge (a texel centre further out would be projected and
+// shifted along the edge).
+glm::dvec3 texel_direction(int face, int i, int j, int size) {
+    const auto coordinate = [size](int k) {
+        if (k < 0) return -1.0 - 1e-9;
+        if (k >= size) return 1.0 + 1e-9;
+        return 2.0 * (k + 0.5) / size - 1.0;
+    };
+    const double sc = coordinate(i), tc = coordinate(j);
+    switch (face) {
+        case 0: return {1.0, -tc, -sc};
+        case 1: return {-1.0, -tc, sc};
+        case 2: return {sc, 1.0, tc};
+        case 3: return {sc, -1.0, -tc};
+        case 4: return {sc, -tc, 1.0};
+        default: return {-sc, -tc, -1.0};
+    }
+}
+
 }  // namespace
+
+CubeSample sample_cube(const texture::TextureData& t, const effect::SamplerState& s, bool srgb, glm::dvec3 direction) {
+    if (s.min_filter != GL_NEAREST && s.min_filter != GL_LINEAR)
+        throw Error("CPU sampler: mipmapped filtering depends on screen derivatives; use nearest or linear");
+    if (s.min_filter != s.mag_filter) throw Error("CPU sampler: min and mag filters must agree");
+    const int size = t.width();
+    const FaceCoordinates f = select_face(direction);
+    if (s.min_filter == GL_NEAREST) {
+        const int i = std::clamp(static_cast<int>(std::floor(f.s * size)), 0, size - 1);
+        const int j = std::clamp(static_cast<int>(std::floor(f.t * size)), 0, size - 1);
+        return {texel(t, srgb, i, j, f.face), 0.0};
+    }
+    const double u = f.s * size - 0.5, v = f.t * size - 0.5;
+    const int i0 = static_cast<int>(std::floor(u)), j0 = static_cast<int>(std::floor(v));
+    const double a = u - i0, b = v - j0;
+    // Seamless filtering: a tap across one edge reads the neighbouring face's edge texel.
+    const auto tap = [&](int i, int j) {
+        if (i >= 0 && i < size && j >= 0 && j < size) return texel(t, srgb, i, j, f.face);
+        const FaceCoordinates n = select_face(texel_direction(f.face, i, j, size));
+        const int ni = std::clamp(static_cast<int>(std::floor(n.s * size)), 0, size - 1);
+        const int nj = std::clamp(static_cast<int>(std::floor(n.t * size)), 0, size - 1);
+        return texel(t, srgb, ni, nj, n.face);
+    };
+    CubeSample result;
+    result.value = (1 - a) * (1 - b) * tap(i0, j0) + a * (1 - b) * tap(i0 + 1, j0) + (1 - a) * b * tap(i0, j0 + 1) + a * b * tap(i0 + 1, j0 + 1);
+    const auto outside = [size](int k) { return k < 0 || k >= size; };
+    if (!((outside(i0) || outside(i0 + 1)) && (outside(j0) || outside(j0 + 1)))) return result;
+    // At a cube corner one tap has no unique neighbour and GL leaves its value to the implementation
+    // (the spec recommends the mean of the three corner texels): the spread of the texels nearby.
+    glm::dvec4 low(1e300), high(-1e300);
+    for (int dj = -1; dj <= 2; ++dj)
+        for (int di = -1; di <= 2; ++di) {
+            const glm::dvec4 value = tap(std::clamp(i0 + di, -1, size), std::clamp(j0 + dj, -1, size));
+            low = glm::min(low, value);
+            high = glm::max(high, value);
+        }
+    const glm::dvec4 spread = high - low;
+    result.seam_spread = std::max({spread.r, spread.g, spread.b, spread.a});
+    return result;
+}
 
 glm::dvec4 sample_2d(const texture::TextureData& t, const effect::SamplerState& s, bool srgb, glm::dvec2 uv) {
     if (s.min_filter != GL_NEAREST && s.min_filter != GL_LINEAR)

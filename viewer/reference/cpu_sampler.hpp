@@ -14,4 +14,16 @@ namespace fxview::reference {
 // screen-space derivatives): they throw Error so that a reference never silently differs.
 glm::dvec4 sample_2d(const texture::TextureData& texture, const effect::SamplerState& sampler, bool srgb, glm::dvec2 uv);
 
+struct CubeSample {
+    glm::dvec4 value;
+    // At a cube corner, where GL leaves the texel of the missing neighbour to the implementation, the
+    // largest spread (max - min per channel) of the texels around; else 0.
+    double seam_spread = 0;
+};
+
+// Samples a cube map in `direction` by GL's face selection (spec table 8.19) and the base level's
+// nearest or linear filter, seamless across face edges (fxview enables GL_TEXTURE_CUBE_MAP_SEAMLESS
+// on every context); faces are stored in GL's row order (row 0 is t = 0).
+CubeSample sample_cube(const texture::TextureData& texture, const effect::SamplerState& sampler, bool srgb, glm::dvec3 direction);
+
 }  // namespace fxview::reference

@@ -1,6 +1,6 @@
 // CheckerLambert: a texture-mapped Lambert surface; the texture is read with the CPU sampler from
-// the same (sRGB-decoded, bilinearly filtered) data the GPU samples. Mirror has no reference yet:
-// it needs cube-map sampling with seamless filtering across faces.
+// the same (sRGB-decoded, bilinearly filtered) data the GPU samples. Mirror reads the cube map the same
+// way, with GL's face selection; at face edges the seamless filter's texels bound the value.
 #include "reference/example_reference.hpp"
 
 #include <algorithm>
@@ -30,7 +30,30 @@ std::map<std::string, Reference> example_references() {
                   "decodes 8-bit sRGB texels within about 1.1e-3 of the exact curve (measured: texel 230 reads "
                   "0.79014, exactly 0.79123) and filters with finite-precision weights; 4e-3 leaves margin and "
                   "stays within one 8-bit code";
+    const std::string texture_why = checker.why;
     all.emplace("CheckerLambert", std::move(checker));
+
+    // Mirror: the cube map in the reflected view direction, linearly filtered on the base level.
+    Reference mirror;
+    const auto sky = [](const ShadingInput& in, const ReferenceContext& c) {
+        const effect::Effect& effect = c.resources.effect();
+        const effect::Parameter* sampler = effect.find_parameter("Sky");
+        const std::string texture_name = sampler ? sampler->texture : "";
+        const effect::TextureResource* resource = effect.find_texture(texture_name);
+        const texture::TextureData* data = c.resources.cpu_copy(texture_name);
+        if (!sampler || !resource || !data) throw Error("reference: textured.fx has no Sky cube map");
+        const glm::dvec3 v = glm::normalize(in.position - in.camera), n = glm::normalize(in.normal);
+        return sample_cube(*data, sampler->sampler, resource->srgb, v - 2.0 * glm::dot(n, v) * n);
+    };
+    mirror.shade = [sky](const ShadingInput& in, const ReferenceContext& c) {
+        const glm::dvec4 value = sky(in, c).value;
+        return std::array<double, 4>{value.r, value.g, value.b, 1.0};
+    };
+    // At cube corners GL leaves one texel to the implementation: the range of the texels around.
+    mirror.slack = [sky](const ShadingInput& in, const ReferenceContext& c) { return sky(in, c).seam_spread; };
+    mirror.tolerance = 4e-3;
+    mirror.why = texture_why;
+    all.emplace("Mirror", std::move(mirror));
     return all;
 }
 

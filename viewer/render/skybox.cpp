@@ -33,7 +33,6 @@ Skybox::Skybox()
       sampler_(gl::create_sampler()) {
     glSamplerParameteri(sampler_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glSamplerParameteri(sampler_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 }
 
 void Skybox::draw(GLuint cube, const scene::Camera& camera, const gl::RenderTarget& target) {
