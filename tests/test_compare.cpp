@@ -93,12 +93,12 @@ TEST_CASE("every thin-film technique matches its CPU reference (exact ones: char
     const auto techniques = app::technique_names(request.effect.path);
     CHECK(techniques.size() == 9);
     // Default soap-like film; then thick films on a metal-like substrate seen from the light with a
-    // 16-layer stack, coarse steps and the 10° observer; then a film thinner than its surroundings
+    // 16-layer dispersive stack, coarse steps and the 10° observer; then a film thinner than its surroundings
     // (total internal reflection in the stack).
     for (const auto& variant : std::vector<std::vector<std::string>>{
              {},
              {"Thickness=900", "Variation=1500", "Incidence=1", "SubstrateKappa=2", "Layers=16", "Steps=5", "LightSpectrum=F11",
-              "FilmIndex=2.4", "Observer=1", "OutputMode=1"},
+              "FilmIndex=2.4", "Observer=1", "OutputMode=1", "FilmDispersion=40000", "SecondDispersion=3000"},
              {"OuterIndex=1.6", "FilmIndex=1.2", "SecondIndex=1.4", "Layers=3", "Steps=7"}}) {
         request.effect.sets = variant;
         for (const auto& technique : techniques) {
@@ -122,7 +122,7 @@ TEST_CASE("a thin-film parameter wrong on the CPU side only makes the comparison
     for (const auto& [technique, wrong] : std::vector<std::pair<std::string, std::string>>{
              {"PathDifference", "Thickness=101"}, {"Fresnel", "SubstrateIndex=1.52"}, {"FresnelExact", "SubstrateKappa=0.05"},
              {"Bubble", "FilmIndex=1.34"}, {"FabryPerot", "Incidence=1"}, {"MultiLayer", "Layers=5"},
-             {"MultiLayerFaster", "SecondThickness=81"}}) {
+             {"MultiLayerFaster", "SecondThickness=81"}, {"MultiLayer", "FilmDispersion=3000"}}) {
         CAPTURE(technique);
         CAPTURE(wrong);
         const app::CompareResult r = app::compare_technique(request, technique, {wrong});

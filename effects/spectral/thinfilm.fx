@@ -30,6 +30,11 @@ uniform float Variation < string UIName = "Variation"; float UIMin = 0; float UI
 uniform int Layers < string UIName = "Layers"; int UIMin = 1; int UIMax = 16; string UIGroup = "Stack"; int UIOrder = 1;
                      string UIHelp = "Films on the substrate, alternating A (n1, varying thickness) and B from the top"; > = 4;
 uniform float SecondIndex < string UIName = "Layer B n"; float UIMin = 1; float UIMax = 3; float UIStep = 0.01; string UIGroup = "Stack"; int UIOrder = 2; > = 2.0;
+uniform float FilmDispersion < string UIName = "Layer A dispersion B"; float UIMin = 0; float UIMax = 50000; float UIStep = 100; string UIUnits = "nm^2";
+                               string UIGroup = "Stack"; int UIOrder = 4;
+                               string UIHelp = "Cauchy: n(lambda) = n + B / lambda^2 (water ~3000, TiO2 ~40000); MultiLayer only"; > = 0.0;
+uniform float SecondDispersion < string UIName = "Layer B dispersion B"; float UIMin = 0; float UIMax = 50000; float UIStep = 100; string UIUnits = "nm^2";
+                                 string UIGroup = "Stack"; int UIOrder = 5; string UIHelp = "Cauchy B of layer B; MultiLayer only"; > = 0.0;
 uniform float SecondThickness < string UIName = "Layer B thickness"; float UIMin = 0; float UIMax = 2000; float UIStep = 1; string UIUnits = "nm";
                                 string UIGroup = "Stack"; int UIOrder = 3; > = 80.0;
 
@@ -242,17 +247,20 @@ GLSLShader FabryPerotFS {
 
 // The stack: layer j (1 = top) is A (FilmIndex, the fragment's thickness) for odd j, else B.
 vec2 layer_index(int j) { return vec2(j % 2 == 1 ? FilmIndex : SecondIndex, 0.0); }
+// With Cauchy dispersion (ch. 5.1: indices that vary with the wavelength), for MultiLayer.
+vec2 layer_index_at(int j, float nm) { return layer_index(j) + vec2((j % 2 == 1 ? FilmDispersion : SecondDispersion) / (nm * nm), 0.0); }
 float layer_thickness(int j, float thickness_a) { return j % 2 == 1 ? thickness_a : SecondThickness; }
 
-// Eq. 67 as the thesis ran it: every layer's angle and coefficients recomputed for each wavelength.
+// Eq. 67 as the thesis ran it: every layer's angle and coefficients recomputed for each wavelength,
+// which also lets the indices follow the wavelength (Cauchy dispersion).
 float multilayer(float cos0, float thickness_a, float nm) {
     int count = clamp(Layers, 1, 16);
     vec2 substrate = vec2(SubstrateIndex, SubstrateKappa);
-    vec2 n_last = layer_index(count), cos_last = refracted_cos_c(OuterIndex, n_last, cos0);
+    vec2 n_last = layer_index_at(count, nm), cos_last = refracted_cos_c(OuterIndex, n_last, cos0);
     Amplitude gamma = fresnel_c(n_last, cos_last, substrate, refracted_cos_c(OuterIndex, substrate, cos0));
     for (int j = count; j >= 1; --j) {
-        vec2 n = layer_index(j), cos_j = refracted_cos_c(OuterIndex, n, cos0);
-        vec2 n_above = j == 1 ? vec2(OuterIndex, 0.0) : layer_index(j - 1);
+        vec2 n = layer_index_at(j, nm), cos_j = refracted_cos_c(OuterIndex, n, cos0);
+        vec2 n_above = j == 1 ? vec2(OuterIndex, 0.0) : layer_index_at(j - 1, nm);
         vec2 cos_above = j == 1 ? vec2(cos0, 0.0) : refracted_cos_c(OuterIndex, n_above, cos0);
         Amplitude r = fresnel_c(n_above, cos_above, n, cos_j);
         vec2 phase = kTwoPi / nm * layer_thickness(j, thickness_a) * c_mul(n, cos_j);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <numbers>
@@ -44,6 +45,7 @@ BrdfGrid thesis_grid() {
 }
 
 BrdfGrid read_brdf_grid(const std::string& path) {
+    if (std::filesystem::is_directory(path)) throw Error(path + ": is a folder, not a BRDF grid file");
     std::ifstream in(path);
     if (!in) throw Error(path + ": cannot open");
     using Key = std::tuple<double, double, double>;

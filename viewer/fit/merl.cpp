@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <numbers>
 
@@ -47,11 +48,12 @@ std::array<double, 3> MerlBrdf::lookup(const glm::dvec3& l, const glm::dvec3& v)
 }
 
 MerlBrdf read_merl(const std::string& path) {
+    if (std::filesystem::is_directory(path)) throw Error(path + ": is a folder, not a MERL file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(path + ": cannot open");
     std::int32_t dims[3] = {};
     in.read(reinterpret_cast<char*>(dims), sizeof dims);
-    if (!in || dims[0] * dims[1] * dims[2] != static_cast<std::int32_t>(kCount))
+    if (!in || static_cast<std::int64_t>(dims[0]) * dims[1] * dims[2] != static_cast<std::int64_t>(kCount))
         throw Error(path + ": not a MERL BRDF (dimensions " + std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " +
                     std::to_string(dims[2]) + ", expected 90 x 90 x 180)");
     MerlBrdf merl;

@@ -21,6 +21,7 @@ struct Film {
     double cos_light, cos_view, cos0;
     double thickness;  // nm at this pixel (layer A of a stack)
     optics::Stack stack;
+    double dispersion_a, dispersion_b;  // Cauchy B of layers A and B (nm²), MultiLayer only
 };
 
 Film film(const ShadingInput& in, const ReferenceContext& c) {
@@ -43,7 +44,16 @@ Film film(const ShadingInput& in, const ReferenceContext& c) {
     for (int j = 1; j <= layers; ++j)
         f.stack.layers.push_back(j % 2 == 1 ? optics::Layer{f.n1, f.thickness}
                                             : optics::Layer{c.number("SecondIndex"), c.number("SecondThickness")});
+    f.dispersion_a = c.number("FilmDispersion");
+    f.dispersion_b = c.number("SecondDispersion");
     return f;
+}
+
+// The stack at one wavelength: Cauchy's n + B / λ² for the films (MultiLayer).
+optics::Stack stack_at(const Film& f, double nm) {
+    optics::Stack stack = f.stack;
+    for (size_t j = 0; j < stack.layers.size(); ++j) stack.layers[j].index += (j % 2 == 0 ? f.dispersion_a : f.dispersion_b) / (nm * nm);
+    return stack;
 }
 
 using Reflectance = std::function<double(const Film&, double nm)>;
@@ -115,9 +125,10 @@ std::map<std::string, Reference> thin_film_references() {
     all.emplace("Bubble", make([](const Film& f, double nm) {
         return optics::transfer_matrix_reflectance(optics::Stack{f.n0, {{f.n1, f.thickness}}, f.n0}, nm, f.cos0);
     }, 1e-4, kFinesseWhy));
-    const Reflectance stack = [](const Film& f, double nm) { return optics::transfer_matrix_reflectance(f.stack, nm, f.cos0); };
-    all.emplace("MultiLayer", make(stack, 5e-5, kPhaseWhy));
-    all.emplace("MultiLayerFaster", make(stack, 5e-5, kPhaseWhy));
+    all.emplace("MultiLayer", make([](const Film& f, double nm) { return optics::transfer_matrix_reflectance(stack_at(f, nm), nm, f.cos0); },
+                                   5e-5, kPhaseWhy));
+    all.emplace("MultiLayerFaster",
+                make([](const Film& f, double nm) { return optics::transfer_matrix_reflectance(f.stack, nm, f.cos0); }, 5e-5, kPhaseWhy));
     return all;
 }
 
