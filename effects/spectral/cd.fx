@@ -2,7 +2,8 @@
 // tracks are circles around the texture centre (0.5, 0.5), so the grating vector g (across the
 // tracks) is the radial direction in texture space mapped to the surface through its tangent frame.
 // Each wavelength's diffracted intensity is weighted by the light spectrum and integrated against
-// the CMFs; a substrate spectrum adds the disc's own diffuse colour (fig. 36).
+// the CMFs; a substrate spectrum adds the disc's own diffuse colour and a cube map its mirrored
+// surroundings (fig. 34, 36).
 // Thesis: eq. 70-72 as documented. Grating: the Fraunhofer interference of N tracks, exact for a
 // reflection grating of N illuminated tracks (orders where d (l + v)·g = mλ).
 // CPU references: viewer/reference/cd_reference.cpp.
@@ -23,7 +24,15 @@ uniform float Threshold < string UIName = "Threshold"; float UIMin = 0; float UI
 uniform int Tracks < string UIName = "Illuminated tracks N"; int UIMin = 1; int UIMax = 200; string UIGroup = "Grating";
                      string UIHelp = "More tracks: sharper orders (width about 1/N)"; > = 12;
 
+// The surroundings mirrored in the disc (fig. 34, 36): a cube map added in RGB after the spectral part.
+texture EnvironmentTexture < string ResourceName = "sky_cross.png"; string ResourceType = "CUBE"; string ColorSpace = "sRGB"; >;
+uniform samplerCube Environment = sampler_state { Texture = <EnvironmentTexture>; MinFilter = Linear; MagFilter = Linear; };
+uniform float EnvironmentWeight < string UIName = "Environment"; float UIMin = 0; float UIMax = 1; string UIGroup = "Disc";
+                                  string UIHelp = "Weight of the mirrored cube map (0: off)"; > = 0.25;
+
 struct Disc { vec3 n, l, v, across, along; };
+
+vec3 environment(Disc d) { return EnvironmentWeight * texture(Environment, reflect(-d.v, d.n)).rgb; }
 
 Disc disc_at(vec3 position, vec3 normal, vec3 tangent, vec2 uv) {
     Disc d;
@@ -61,7 +70,7 @@ GLSLShader ThesisFS {
             float intensity = fract(path / float(nm));
             add_sample(xyz, ybar_sum, nm, intensity > Threshold ? intensity : 0.0, diffuse);
         }
-        color = vec4(xyz_to_srgb(xyz * normalisation(ybar_sum) * Brightness), 1.0);
+        color = vec4(xyz_to_srgb(xyz * normalisation(ybar_sum) * Brightness) + environment(d), 1.0);
         fx_capture();
     }
 }
@@ -87,7 +96,7 @@ GLSLShader GratingFS {
             float ratio = abs(s) > 1e-6 ? sin(float(tracks) * a) / s : 1.0;
             add_sample(xyz, ybar_sum, nm, lit ? ratio * ratio : 0.0, diffuse);
         }
-        color = vec4(xyz_to_srgb(xyz * normalisation(ybar_sum) * Brightness), 1.0);
+        color = vec4(xyz_to_srgb(xyz * normalisation(ybar_sum) * Brightness) + environment(d), 1.0);
         fx_capture();
     }
 }

@@ -52,7 +52,6 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
     const reference::Reference* ref = reference::find_reference(stem, result.technique);
     result.has_reference = ref != nullptr;
     if (!ref) return result;
-    result.tolerance = ref->tolerance;
     result.tolerance_reason = ref->why;
 
     // No MSAA: every pixel's colour and captured inputs must come from one fragment.
@@ -64,6 +63,8 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
     effect::ParameterValues cpu_values = session.values();
     for (const auto& assignment : reference_sets) effect::set_value_from_text(session.effect(), cpu_values, assignment);
     const reference::ReferenceContext reference_context{cpu_values, session.resources()};
+    const double tolerance = ref->tolerance_for ? ref->tolerance_for(reference_context) : ref->tolerance;
+    result.tolerance = tolerance;
     const glm::dvec3 camera(math::camera_world_position(request.scene.camera.pose));
     const glm::dvec3 light(request.scene.light.world_position());
 
@@ -99,10 +100,10 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
             error_sum += pixel_error;
             // A pixel that needed its slack (a jump, or a highlight as sensitive as the slack says) is
             // judged by the float bound alone: the 8-bit check would only repeat it.
-            const bool used_slack = pixel_error > ref->tolerance && pixel_error <= ref->tolerance + slack;
+            const bool used_slack = pixel_error > tolerance && pixel_error <= tolerance + slack;
             if (used_slack) ++result.pixels_within_slack;
             if (mismatch && !used_slack) ++result.mismatched_8bit;
-            if (pixel_error > ref->tolerance + slack) ++result.exceeding;
+            if (pixel_error > tolerance + slack) ++result.exceeding;
             if (pixel_error > result.max_abs_error || result.worst_pixel.x < 0) {
                 result.max_abs_error = std::max(result.max_abs_error, pixel_error);
                 result.worst_pixel.x = x;
@@ -110,7 +111,7 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
                 for (int c = 0; c < 4; ++c) result.worst_pixel.gpu[c] = gpu.pixel(x, y)[c];
                 result.worst_pixel.cpu = cpu;
             }
-            const auto colour = heat(pixel_error / (ref->tolerance + slack));
+            const auto colour = heat(pixel_error / (tolerance + slack));
             std::copy(colour.begin(), colour.end(), heat_pixel);
         }
     result.mean_abs_error = result.pixels > 0 ? error_sum / static_cast<double>(result.pixels) : 0.0;

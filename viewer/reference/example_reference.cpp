@@ -5,8 +5,6 @@
 
 #include <algorithm>
 
-#include "core/error.hpp"
-#include "reference/cpu_sampler.hpp"
 
 namespace fxview::reference {
 
@@ -14,12 +12,7 @@ std::map<std::string, Reference> example_references() {
     std::map<std::string, Reference> all;
     Reference checker;
     checker.shade = [](const ShadingInput& in, const ReferenceContext& c) {
-        const effect::Effect& effect = c.resources.effect();
-        const effect::Parameter* sampler = effect.find_parameter("Checker");
-        const effect::TextureResource* resource = effect.find_texture("Checker");
-        const texture::TextureData* data = c.resources.cpu_copy("Checker");
-        if (!sampler || !resource || !data) throw Error("reference: textured.fx has no Checker texture");
-        const glm::dvec4 albedo = sample_2d(*data, sampler->sampler, resource->srgb, in.uv * c.number("Tiling"));
+        const glm::dvec4 albedo = c.sample_2d("Checker", in.uv * c.number("Tiling"));
         const double ambient = c.number("Ambient");
         const double lambert = std::max(glm::dot(glm::normalize(in.normal), glm::normalize(in.light - in.position)), 0.0);
         const double shade = ambient + (1.0 - ambient) * lambert;
@@ -36,14 +29,8 @@ std::map<std::string, Reference> example_references() {
     // Mirror: the cube map in the reflected view direction, linearly filtered on the base level.
     Reference mirror;
     const auto sky = [](const ShadingInput& in, const ReferenceContext& c) {
-        const effect::Effect& effect = c.resources.effect();
-        const effect::Parameter* sampler = effect.find_parameter("Sky");
-        const std::string texture_name = sampler ? sampler->texture : "";
-        const effect::TextureResource* resource = effect.find_texture(texture_name);
-        const texture::TextureData* data = c.resources.cpu_copy(texture_name);
-        if (!sampler || !resource || !data) throw Error("reference: textured.fx has no Sky cube map");
         const glm::dvec3 v = glm::normalize(in.position - in.camera), n = glm::normalize(in.normal);
-        return sample_cube(*data, sampler->sampler, resource->srgb, v - 2.0 * glm::dot(n, v) * n);
+        return c.sample_cube("Sky", v - 2.0 * glm::dot(n, v) * n);
     };
     mirror.shade = [sky](const ShadingInput& in, const ReferenceContext& c) {
         const glm::dvec4 value = sky(in, c).value;

@@ -24,6 +24,36 @@ const spectral::PackedTexture& ReferenceContext::generated(const std::string& te
     return *packed;
 }
 
+namespace {
+
+struct SamplerData {
+    const effect::Parameter* sampler;
+    const effect::TextureResource* resource;
+    const texture::TextureData* data;
+};
+
+SamplerData sampler_data(const ReferenceContext& c, const std::string& name) {
+    const effect::Effect& effect = c.resources.effect();
+    const effect::Parameter* sampler = effect.find_parameter(name);
+    // A sampler with annotations names its own texture; one with sampler_state names the texture block.
+    const effect::TextureResource* resource = sampler ? effect.find_texture(sampler->texture.empty() ? name : sampler->texture) : nullptr;
+    const texture::TextureData* data = resource ? c.resources.cpu_copy(resource->name) : nullptr;
+    if (!data) throw Error("reference: the effect has no sampler " + name + " with loaded texture data");
+    return {sampler, resource, data};
+}
+
+}  // namespace
+
+glm::dvec4 ReferenceContext::sample_2d(const std::string& sampler, glm::dvec2 uv) const {
+    const SamplerData d = sampler_data(*this, sampler);
+    return reference::sample_2d(*d.data, d.sampler->sampler, d.resource->srgb, uv);
+}
+
+CubeSample ReferenceContext::sample_cube(const std::string& sampler, glm::dvec3 direction) const {
+    const SamplerData d = sampler_data(*this, sampler);
+    return reference::sample_cube(*d.data, d.sampler->sampler, d.resource->srgb, direction);
+}
+
 const Reference* find_reference(const std::string& effect_stem, const std::string& technique) {
     // Built once from the reference modules; keys are "effect/technique".
     static const std::map<std::string, Reference> references = [] {

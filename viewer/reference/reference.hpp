@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "effect/parameter_values.hpp"
+#include "reference/cpu_sampler.hpp"
 #include "render/effect_resources.hpp"
 
 namespace fxview::reference {
@@ -30,6 +31,10 @@ struct ReferenceContext {
 
     double number(const std::string& name) const;  // first component of a parameter; Error if absent
     const spectral::PackedTexture& generated(const std::string& texture) const;
+    // A sampler parameter's texture read by GL's rules through the CPU sampler (cpu_sampler.hpp),
+    // from the data exactly as uploaded; Error if the effect has no such sampler.
+    glm::dvec4 sample_2d(const std::string& sampler, glm::dvec2 uv) const;
+    CubeSample sample_cube(const std::string& sampler, glm::dvec3 direction) const;
 };
 
 using Shader = std::function<std::array<double, 4>(const ShadingInput&, const ReferenceContext&)>;
@@ -38,6 +43,9 @@ struct Reference {
     Shader shade;
     double tolerance = 1e-4;  // largest float difference allowed per channel
     std::string why;          // where the tolerance comes from
+    // Where the tolerance depends on parameter values (e.g. the weight of a texture term): replaces
+    // `tolerance` when set.
+    std::function<double(const ReferenceContext&)> tolerance_for;
     // Extra error allowed at one pixel, from the technique's own sensitivity to float rounding of its
     // inputs: at a discontinuity (PathDifference's frac()) float and double may land on either side
     // of the jump; in a sharp highlight a few ulps of a cosine move the value by more than the
