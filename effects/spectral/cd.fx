@@ -22,7 +22,7 @@ uniform float TrackSpacing < string UIName = "Track spacing d"; float UIMin = 30
 uniform float Threshold < string UIName = "Threshold"; float UIMin = 0; float UIMax = 1; string UIGroup = "Thesis (eq. 72)";
                           string UIHelp = "Intensities below it are cut to 0 (the thesis' hard cut)"; > = 0.5;
 uniform int Tracks < string UIName = "Illuminated tracks N"; int UIMin = 1; int UIMax = 200; string UIGroup = "Grating";
-                     string UIHelp = "More tracks: sharper orders (width about 1/N)"; > = 12;
+                     string UIHelp = "More tracks: sharper orders (width about 1/N); beyond ~100 they get narrower than the 1 nm sampling"; > = 60;
 
 // The surroundings mirrored in the disc (fig. 34, 36): a cube map added in RGB after the spectral part.
 texture EnvironmentTexture < string ResourceName = "sky_cross.png"; string ResourceType = "CUBE"; string ColorSpace = "sRGB"; >;
