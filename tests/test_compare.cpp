@@ -91,7 +91,7 @@ TEST_CASE("every thin-film technique matches its CPU reference (exact ones: char
     request.width = request.height = 96;
     request.effect.path = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/thinfilm.fx";
     const auto techniques = app::technique_names(request.effect.path);
-    CHECK(techniques.size() == 9);
+    CHECK(techniques.size() == 10);
     // Default soap-like film; then thick films on a metal-like substrate seen from the light with a
     // 16-layer dispersive stack, coarse steps and the 10° observer; then a film thinner than its surroundings
     // (total internal reflection in the stack).
@@ -122,7 +122,8 @@ TEST_CASE("a thin-film parameter wrong on the CPU side only makes the comparison
     for (const auto& [technique, wrong] : std::vector<std::pair<std::string, std::string>>{
              {"PathDifference", "Thickness=101"}, {"Fresnel", "SubstrateIndex=1.52"}, {"FresnelExact", "SubstrateKappa=0.05"},
              {"Bubble", "FilmIndex=1.34"}, {"FabryPerot", "Incidence=1"}, {"MultiLayer", "Layers=5"},
-             {"MultiLayerFaster", "SecondThickness=81"}, {"MultiLayer", "FilmDispersion=3000"}}) {
+             {"MultiLayerFaster", "SecondThickness=81"}, {"MultiLayer", "FilmDispersion=3000"}, {"BumpFresnelExact", "WaveFrequency=12.5"},
+             {"BumpFresnelExact", "WaveThickness=11000"}}) {
         CAPTURE(technique);
         CAPTURE(wrong);
         const app::CompareResult r = app::compare_technique(request, technique, {wrong});

@@ -171,25 +171,56 @@ GLSLShader FresnelAlternativeFS {
 
 // Airy's sum for one film on a substrate n2 + iκ, per polarisation, in complex form (one step of
 // eq. 67): exact, also past the critical angle and on metals.
+vec4 fresnel_exact_colour(Film f) {
+    vec2 n1 = vec2(FilmIndex, 0.0), n2 = vec2(SubstrateIndex, SubstrateKappa);
+    vec2 cos1 = refracted_cos_c(OuterIndex, n1, f.cos0), cos2 = refracted_cos_c(OuterIndex, n2, f.cos0);
+    Amplitude r01 = fresnel_c(vec2(OuterIndex, 0.0), vec2(f.cos0, 0.0), n1, cos1);
+    Amplitude r12 = fresnel_c(n1, cos1, n2, cos2);
+    vec2 path = kTwoPi * f.thickness * c_mul(n1, cos1);
+    vec3 xyz = vec3(0.0);
+    float ybar_sum = 0.0;
+    for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+        vec2 s = hirayama_step(r01.s, r12.s, path / float(nm));
+        vec2 p = hirayama_step(r01.p, r12.p, path / float(nm));
+        add_sample(xyz, ybar_sum, nm, 0.5 * (dot(s, s) + dot(p, p)));
+    }
+    return film_colour(xyz, ybar_sum);
+}
+
 GLSLShader FresnelExactFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
-        vec2 n1 = vec2(FilmIndex, 0.0), n2 = vec2(SubstrateIndex, SubstrateKappa);
-        vec2 cos1 = refracted_cos_c(OuterIndex, n1, f.cos0), cos2 = refracted_cos_c(OuterIndex, n2, f.cos0);
-        Amplitude r01 = fresnel_c(vec2(OuterIndex, 0.0), vec2(f.cos0, 0.0), n1, cos1);
-        Amplitude r12 = fresnel_c(n1, cos1, n2, cos2);
-        vec2 path = kTwoPi * f.thickness * c_mul(n1, cos1);
-        vec3 xyz = vec3(0.0);
-        float ybar_sum = 0.0;
-        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
-            vec2 s = hirayama_step(r01.s, r12.s, path / float(nm));
-            vec2 p = hirayama_step(r01.p, r12.p, path / float(nm));
-            add_sample(xyz, ybar_sum, nm, 0.5 * (dot(s, s) + dot(p, p)));
-        }
-        color = film_colour(xyz, ybar_sum);
+        color = fresnel_exact_colour(film_at(fs_in.world_position, fs_in.normal, fs_in.uv));
+        fx_capture();
+    }
+}
+
+// Bump mapping (eq. 69, fig. 32/33): a procedural wave height h(u, v) = A sin(2πfu) sin(2πfv) tilts
+// the normal in tangent space, n' = normalize(T (-dh/du) + B (-dh/dv) + N) with B = N x T, and
+// thickens the film by WaveThickness · h; the film is then FresnelExact's.
+uniform float WaveAmplitude < string UIName = "Wave amplitude"; float UIMin = 0; float UIMax = 0.1; float UIStep = 0.001; string UIGroup = "Bumps";
+                              string UIHelp = "Height of the waves in texture units (BumpFresnelExact)"; > = 0.004;
+uniform float WaveFrequency < string UIName = "Waves per texture unit"; float UIMin = 1; float UIMax = 64; string UIGroup = "Bumps"; > = 12.0;
+uniform float WaveThickness < string UIName = "Thickness per height"; float UIMin = 0; float UIMax = 100000; string UIUnits = "nm";
+                              string UIGroup = "Bumps"; string UIHelp = "Film thickness added per unit of wave height (crests are thicker)"; > = 10000.0;
+
+GLSLShader BumpFresnelExactFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        vec3 n = normalize(fs_in.normal);
+        vec3 t = normalize(fs_in.tangent - n * dot(n, fs_in.tangent));
+        vec3 b = cross(n, t);
+        float w = kTwoPi * WaveFrequency;
+        vec2 phase = w * fs_in.uv;
+        float height = WaveAmplitude * sin(phase.x) * sin(phase.y);
+        vec2 slope = WaveAmplitude * w * vec2(cos(phase.x) * sin(phase.y), sin(phase.x) * cos(phase.y));
+        Film f = film_at(fs_in.world_position, -slope.x * t - slope.y * b + n, fs_in.uv);
+        f.thickness = max(f.thickness + WaveThickness * height, 0.0);
+        color = fresnel_exact_colour(f);
         fx_capture();
     }
 }
@@ -323,6 +354,7 @@ technique Fresnel { pass p0 { VertexShader = StandardVS; FragmentShader = Fresne
 technique FresnelFaster { pass p0 { VertexShader = StandardVS; FragmentShader = FresnelFasterFS; } }
 technique FresnelAlternative { pass p0 { VertexShader = StandardVS; FragmentShader = FresnelAlternativeFS; } }
 technique FresnelExact { pass p0 { VertexShader = StandardVS; FragmentShader = FresnelExactFS; } }
+technique BumpFresnelExact { pass p0 { VertexShader = StandardVS; FragmentShader = BumpFresnelExactFS; } }
 technique Bubble { pass p0 { VertexShader = StandardVS; FragmentShader = BubbleFS; } }
 technique FabryPerot { pass p0 { VertexShader = StandardVS; FragmentShader = FabryPerotFS; } }
 technique MultiLayer { pass p0 { VertexShader = StandardVS; FragmentShader = MultiLayerFS; } }

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <numbers>
 
 #include "optics/thesis_models.hpp"
 #include "optics/thin_film.hpp"
@@ -56,17 +57,34 @@ optics::Stack stack_at(const Film& f, double nm) {
     return stack;
 }
 
+// The height field of BumpFresnelExact, h = A sin(2πfu) sin(2πfv): the film under the normal tilted
+// by -∇h in the tangent frame (T, B = N x T, N), thickened by WaveThickness · h.
+Film bumped_film(const ShadingInput& in, const ReferenceContext& c) {
+    const double amplitude = c.number("WaveAmplitude"), w = 2.0 * std::numbers::pi * c.number("WaveFrequency");
+    const glm::dvec3 n = glm::normalize(in.normal);
+    const glm::dvec3 t = glm::normalize(in.tangent - n * glm::dot(n, in.tangent));
+    const glm::dvec3 b = glm::cross(n, t);
+    const glm::dvec2 phase = w * in.uv;
+    const glm::dvec2 slope = amplitude * w * glm::dvec2(std::cos(phase.x) * std::sin(phase.y), std::sin(phase.x) * std::cos(phase.y));
+    ShadingInput tilted = in;
+    tilted.normal = -slope.x * t - slope.y * b + n;
+    Film f = film(tilted, c);
+    f.thickness = std::max(f.thickness + c.number("WaveThickness") * amplitude * std::sin(phase.x) * std::sin(phase.y), 0.0);
+    return f;
+}
+
 using Reflectance = std::function<double(const Film&, double nm)>;
+
+// The light spectrum times the film's reflectance, integrated against the CMFs.
+std::array<double, 4> film_colour(const Film& f, const ReferenceContext& c, const Reflectance& reflectance) {
+    const SpectralSetup s = spectral_setup(c);
+    const int light = static_cast<int>(c.number("LightSpectrum"));
+    return to_rgba(integrate(s, false, [&](int nm) { return spectral::packed_value(*s.spectra, light, nm) * reflectance(f, nm); }), s.mapping);
+}
 
 Reference make(Reflectance reflectance, double tolerance, std::string why) {
     Reference r;
-    r.shade = [reflectance](const ShadingInput& in, const ReferenceContext& c) {
-        const SpectralSetup s = spectral_setup(c);
-        const int light = static_cast<int>(c.number("LightSpectrum"));
-        const Film f = film(in, c);
-        return to_rgba(integrate(s, false, [&](int nm) { return spectral::packed_value(*s.spectra, light, nm) * reflectance(f, nm); }),
-                       s.mapping);
-    };
+    r.shade = [reflectance](const ShadingInput& in, const ReferenceContext& c) { return film_colour(film(in, c), c, reflectance); };
     r.tolerance = tolerance;
     r.why = std::move(why);
     return r;
@@ -119,9 +137,14 @@ std::map<std::string, Reference> thin_film_references() {
     }, 1e-4, kFinesseWhy));
 
     // Exact models against characteristic matrices.
-    all.emplace("FresnelExact", make([](const Film& f, double nm) {
+    const Reflectance single_film = [](const Film& f, double nm) {
         return optics::transfer_matrix_reflectance(optics::Stack{f.n0, {{f.n1, f.thickness}}, optics::Complex(f.n2, f.kappa)}, nm, f.cos0);
-    }, 5e-5, kPhaseWhy));
+    };
+    all.emplace("FresnelExact", make(single_film, 5e-5, kPhaseWhy));
+    // Bump mapping (eq. 69): the same film under a wave-tilted normal, thickened at the crests.
+    Reference bump = make(single_film, 5e-5, kPhaseWhy);
+    bump.shade = [single_film](const ShadingInput& in, const ReferenceContext& c) { return film_colour(bumped_film(in, c), c, single_film); };
+    all.emplace("BumpFresnelExact", std::move(bump));
     all.emplace("Bubble", make([](const Film& f, double nm) {
         return optics::transfer_matrix_reflectance(optics::Stack{f.n0, {{f.n1, f.thickness}}, f.n0}, nm, f.cos0);
     }, 1e-4, kFinesseWhy));
