@@ -3,7 +3,10 @@
 // observers, coarse steps), and fails when the CPU side alone gets a wrong parameter.
 #include <doctest/doctest.h>
 
+#include <filesystem>
+
 #include "app/gpu_cpu_compare.hpp"
+#include "reference/reference.hpp"
 #include "test_support.hpp"
 
 using namespace fxview;
@@ -208,4 +211,18 @@ TEST_CASE("Mirror: a cube map read with GL's face selection and seamless filteri
         CHECK(r.pixels_within_slack * 100 < r.pixels);  // slack only at the cube's corners
         MESSAGE("Mirror on ", mesh, ": max ", r.max_abs_error, " mean ", r.mean_abs_error, " slack pixels ", r.pixels_within_slack);
     }
+}
+
+TEST_CASE("every technique of every shipped effect has a CPU reference") {
+    int techniques = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(FXVIEW_SOURCE_EFFECTS_DIR)) {
+        if (entry.path().extension() != ".fx") continue;
+        for (const auto& technique : app::technique_names(entry.path().string())) {
+            CAPTURE(entry.path().string());
+            CAPTURE(technique);
+            CHECK(reference::find_reference(entry.path().stem().string(), technique) != nullptr);
+            ++techniques;
+        }
+    }
+    CHECK(techniques >= 34);
 }
