@@ -45,6 +45,8 @@ run: build
 	$(FXVIEW) pick --mesh sphere --size 256x256 --at 128,128
 	$(FXVIEW) brdf-grid --model pbr --param base=0.9,0.6,0.3 --param roughness=0.3 --out out/gold-grid.csv
 	$(FXVIEW) fit out/gold-grid.csv --out out/fit-gold.csv --preset out/fit-gold.json --preview out/fit-gold.png
+	$(FXVIEW) render effects/brdf/measured.fx --technique Measured --set Measured=out/gold-grid.csv --mesh knot --size 512x512 --out out/knot-measured.png
+	$(FXVIEW) render effects/brdf/measured.fx --technique Fitted --preset out/fit-gold.json --mesh knot --size 512x512 --out out/knot-fitted.png
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)

@@ -186,6 +186,8 @@ CommandRunner add_brdf_grid_command(CLI::App& app) {
         std::vector<std::string> params;
         double noise = 0;
         unsigned seed = 1;
+        std::vector<int> samples{19, 37, 36};
+        int digits = 17;
     };
     auto o = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("brdf-grid", "Tabulate an analytic BRDF on the thesis' measurement grid (synthetic data for fit)");
@@ -194,17 +196,21 @@ CommandRunner add_brdf_grid_command(CLI::App& app) {
     command->add_option("--noise", o->noise, "Relative Gaussian noise on every value (e.g. 0.02)")->check(CLI::Range(0.0, 1.0));
     command->add_option("--seed", o->seed, "Noise seed (the same seed gives the same file)")->capture_default_str();
     command->add_option("--merl", o->merl, "Sample a MERL .binary file instead of a model");
+    command->add_option("--samples", o->samples, "Samples of theta_in, theta_out (0..90) and phi_out (0..180); the thesis' 19 37 36")
+        ->expected(3)->capture_default_str();
+    command->add_option("--digits", o->digits, "Significant digits written (17 keeps doubles exact)")->capture_default_str()->check(CLI::Range(3, 17));
     command->add_option("--out,-o", o->out, "CSV file")->required();
     return [o] {
         std::mt19937 random(o->seed);
         std::normal_distribution<double> gauss(0.0, 1.0);
-        fit::BrdfGrid grid = o->merl.empty() ? fit::tabulate(fit::thesis_grid(), analytic_model(o->model, o->params))
-                                             : fit::merl_to_grid(fit::read_merl(o->merl), fit::thesis_grid());
+        const fit::BrdfGrid shape = fit::uniform_grid(o->samples[0], o->samples[1], o->samples[2]);
+        fit::BrdfGrid grid = o->merl.empty() ? fit::tabulate(shape, analytic_model(o->model, o->params))
+                                             : fit::merl_to_grid(fit::read_merl(o->merl), shape);
         if (o->noise > 0)
             for (auto& v : grid.values)
                 for (double& c : v) c *= 1.0 + o->noise * gauss(random);
         create_parent(o->out);
-        fit::write_brdf_grid(grid, o->out);
+        fit::write_brdf_grid(grid, o->out, o->digits);
         std::cout << "wrote " << o->out << " (" << grid.size() << " directions, " << (o->merl.empty() ? "model " + o->model : o->merl) << ")\n";
         return 0;
     };

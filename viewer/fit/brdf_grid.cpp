@@ -35,13 +35,27 @@ glm::dvec3 BrdfGrid::camera(size_t o, size_t p) const {
     return {std::sin(t) * std::cos(f), std::sin(t) * std::sin(f), std::cos(t)};
 }
 
-BrdfGrid thesis_grid() {
+BrdfGrid thesis_grid() { return uniform_grid(19, 37, 36); }
+
+BrdfGrid uniform_grid(int theta_in_count, int theta_out_count, int phi_out_count) {
+    if (theta_in_count < 2 || theta_out_count < 2 || phi_out_count < 2) throw UsageError("a BRDF grid needs at least 2 samples per angle");
     BrdfGrid grid;
-    grid.theta_in = steps(0, 90, 19);
-    grid.theta_out = steps(0, 90, 37);
-    grid.phi_out = steps(0, 180, 36);
+    grid.theta_in = steps(0, 90, theta_in_count);
+    grid.theta_out = steps(0, 90, theta_out_count);
+    grid.phi_out = steps(0, 180, phi_out_count);
     grid.values.assign(grid.size(), {0, 0, 0});
     return grid;
+}
+
+bool is_uniform_full_grid(const BrdfGrid& grid) {
+    const auto uniform = [](const std::vector<double>& v, double last) {
+        if (v.size() < 2 || v.front() != 0.0 || std::abs(v.back() - last) > 1e-9) return false;
+        const double step = last / static_cast<double>(v.size() - 1);
+        for (size_t i = 0; i < v.size(); ++i)
+            if (std::abs(v[i] - step * static_cast<double>(i)) > 1e-6) return false;
+        return true;
+    };
+    return uniform(grid.theta_in, 90.0) && uniform(grid.theta_out, 90.0) && uniform(grid.phi_out, 180.0);
 }
 
 BrdfGrid read_brdf_grid(const std::string& path) {
@@ -102,12 +116,12 @@ BrdfGrid read_brdf_grid(const std::string& path) {
     return grid;
 }
 
-void write_brdf_grid(const BrdfGrid& grid, const std::string& path) {
+void write_brdf_grid(const BrdfGrid& grid, const std::string& path, int significant_digits) {
     std::ofstream out(path);
     if (!out) throw Error(path + ": cannot write");
     out << "# fxview BRDF grid: light on -x at theta_in, camera at (theta_out, phi_out from +x), normal +z; RGB in 1/sr\n";
     out << "theta_in_deg,theta_out_deg,phi_out_deg,r,g,b\n";
-    out.precision(17);
+    out.precision(significant_digits);
     for (size_t i = 0; i < grid.theta_in.size(); ++i)
         for (size_t o = 0; o < grid.theta_out.size(); ++o)
             for (size_t p = 0; p < grid.phi_out.size(); ++p) {

@@ -26,10 +26,14 @@ struct BrdfGrid {
 
 // The thesis' grid: θi 0..90 in 5° (19), θo 0..90 in 2.5° (37), φo 0..180 in 36 steps; values zero.
 BrdfGrid thesis_grid();
+// A uniform grid over the same ranges with `theta_in_count`, `theta_out_count`, `phi_out_count` samples.
+BrdfGrid uniform_grid(int theta_in_count, int theta_out_count, int phi_out_count);
+// True when the grid spans θ 0..90° and φ 0..180° with uniform steps (what a 3D texture of it needs).
+bool is_uniform_full_grid(const BrdfGrid& grid);
 
 // Reads / writes the CSV format above; read errors name the file and line (Error).
 BrdfGrid read_brdf_grid(const std::string& path);
-void write_brdf_grid(const BrdfGrid& grid, const std::string& path);
+void write_brdf_grid(const BrdfGrid& grid, const std::string& path, int significant_digits = 17);  // 17: exact doubles
 
 // The grid's directions filled with f(l, v) (e.g. an analytic model: synthetic "measurements").
 BrdfGrid tabulate(const BrdfGrid& grid, const std::function<std::array<double, 3>(const glm::dvec3& l, const glm::dvec3& v)>& f);

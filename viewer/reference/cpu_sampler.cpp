@@ -21,11 +21,11 @@ int wrap(int i, int size, GLenum mode) {
     }
 }
 
-glm::dvec4 texel(const texture::TextureData& t, bool srgb, int i, int j, int face = -1) {
+glm::dvec4 texel(const texture::TextureData& t, bool srgb, int i, int j, int face = -1, int slice = 0) {
     float rgba[4];
-    // GL row j counts from the bottom; 2D data keep the image's top row first, cube faces are stored
-    // in GL's order (row 0 is t = 0).
-    if (face < 0) texture::read_texel(t, 0, 0, i, t.height() - 1 - j, rgba);
+    // GL row j counts from the bottom; 2D data (and each 3D slice) keep the image's top row first,
+    // cube faces are stored in GL's order (row 0 is t = 0).
+    if (face < 0) texture::read_texel(t, 0, 0, i, t.height() - 1 - j, rgba, slice);
     else texture::read_texel(t, face, 0, i, j, rgba);
     glm::dvec4 value(rgba[0], rgba[1], rgba[2], rgba[3]);
     if (srgb)
@@ -123,6 +123,48 @@ CubeSample sample_cube(const texture::TextureData& t, const effect::SamplerState
     const glm::dvec4 spread = high - low;
     result.seam_spread = std::max({spread.r, spread.g, spread.b, spread.a});
     return result;
+}
+
+glm::dvec4 sample_3d(const texture::TextureData& t, const effect::SamplerState& s, bool srgb, glm::dvec3 str, double* footprint_spread) {
+    if (s.min_filter != GL_NEAREST && s.min_filter != GL_LINEAR)
+        throw Error("CPU sampler: mipmapped filtering depends on screen derivatives; use nearest or linear");
+    if (s.min_filter != s.mag_filter) throw Error("CPU sampler: min and mag filters must agree");
+    const int size[3] = {t.width(), t.height(), t.depth()};
+    const GLenum modes[3] = {s.wrap_s, s.wrap_t, s.wrap_r};
+    if (s.min_filter == GL_NEAREST) {
+        int k[3];
+        for (int a = 0; a < 3; ++a) k[a] = wrap(static_cast<int>(std::floor(str[a] * size[a])), size[a], modes[a]);
+        if (footprint_spread) *footprint_spread = 0;
+        return texel(t, srgb, k[0], k[1], -1, k[2]);
+    }
+    int low[3], high[3];
+    double weight[3];
+    for (int a = 0; a < 3; ++a) {
+        const double u = str[a] * size[a] - 0.5;
+        const int k = static_cast<int>(std::floor(u));
+        weight[a] = u - k;
+        low[a] = wrap(k, size[a], modes[a]);
+        high[a] = wrap(k + 1, size[a], modes[a]);
+    }
+    glm::dvec4 sum(0.0), lowest(1e300), highest(-1e300);
+    for (int corner = 0; corner < 8; ++corner) {
+        double w = 1.0;
+        int k[3];
+        for (int a = 0; a < 3; ++a) {
+            const bool upper = (corner >> a) & 1;
+            k[a] = upper ? high[a] : low[a];
+            w *= upper ? weight[a] : 1.0 - weight[a];
+        }
+        const glm::dvec4 value = texel(t, srgb, k[0], k[1], -1, k[2]);
+        sum += w * value;
+        lowest = glm::min(lowest, value);
+        highest = glm::max(highest, value);
+    }
+    if (footprint_spread) {
+        const glm::dvec4 spread = highest - lowest;
+        *footprint_spread = std::max({spread.r, spread.g, spread.b, spread.a});
+    }
+    return sum;
 }
 
 glm::dvec4 sample_2d(const texture::TextureData& t, const effect::SamplerState& s, bool srgb, glm::dvec2 uv) {

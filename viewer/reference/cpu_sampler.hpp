@@ -14,6 +14,11 @@ namespace fxview::reference {
 // screen-space derivatives): they throw Error so that a reference never silently differs.
 glm::dvec4 sample_2d(const texture::TextureData& texture, const effect::SamplerState& sampler, bool srgb, glm::dvec2 uv);
 
+// A 3D texture at `str` (GL's s, t, r; r = 0 at slice 0), trilinear or nearest on the base level.
+// `footprint_spread` (optional) receives the largest max - min per channel of the texels filtered.
+glm::dvec4 sample_3d(const texture::TextureData& texture, const effect::SamplerState& sampler, bool srgb, glm::dvec3 str,
+                     double* footprint_spread = nullptr);
+
 struct CubeSample {
     glm::dvec4 value;
     // At a cube corner, where GL leaves the texel of the missing neighbour to the implementation, the

@@ -6,6 +6,7 @@
 #include "reference/brdf_reference.hpp"
 #include "reference/cd_reference.hpp"
 #include "reference/debug_reference.hpp"
+#include "reference/measured_reference.hpp"
 #include "reference/example_reference.hpp"
 #include "reference/spectral_reference.hpp"
 #include "reference/thin_film_reference.hpp"
@@ -49,6 +50,16 @@ glm::dvec4 ReferenceContext::sample_2d(const std::string& sampler, glm::dvec2 uv
     return reference::sample_2d(*d.data, d.sampler->sampler, d.resource->srgb, uv);
 }
 
+glm::dvec4 ReferenceContext::sample_3d(const std::string& sampler, glm::dvec3 str, double* footprint_spread) const {
+    const SamplerData d = sampler_data(*this, sampler);
+    return reference::sample_3d(*d.data, d.sampler->sampler, d.resource->srgb, str, footprint_spread);
+}
+
+glm::ivec3 ReferenceContext::texture_size(const std::string& sampler) const {
+    const SamplerData d = sampler_data(*this, sampler);
+    return {d.data->width(), d.data->height(), d.data->depth()};
+}
+
 CubeSample ReferenceContext::sample_cube(const std::string& sampler, glm::dvec3 direction) const {
     const SamplerData d = sampler_data(*this, sampler);
     return reference::sample_cube(*d.data, d.sampler->sampler, d.resource->srgb, direction);
@@ -62,6 +73,7 @@ const Reference* find_reference(const std::string& effect_stem, const std::strin
         for (auto& [name, reference] : thin_film_references()) all.emplace("thinfilm/" + name, std::move(reference));
         for (auto& [name, reference] : cd_references()) all.emplace("cd/" + name, std::move(reference));
         for (auto& [name, reference] : brdf_references()) all.emplace("analytic/" + name, std::move(reference));
+        for (auto& [name, reference] : measured_references()) all.emplace("measured/" + name, std::move(reference));
         for (auto& [name, reference] : debug_references()) all.emplace("debug/" + name, std::move(reference));
         for (auto& [name, reference] : example_references()) all.emplace("textured/" + name, std::move(reference));
         return all;

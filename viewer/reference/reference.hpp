@@ -34,6 +34,8 @@ struct ReferenceContext {
     // A sampler parameter's texture read by GL's rules through the CPU sampler (cpu_sampler.hpp),
     // from the data exactly as uploaded; Error if the effect has no such sampler.
     glm::dvec4 sample_2d(const std::string& sampler, glm::dvec2 uv) const;
+    glm::dvec4 sample_3d(const std::string& sampler, glm::dvec3 str, double* footprint_spread = nullptr) const;
+    glm::ivec3 texture_size(const std::string& sampler) const;  // width, height, depth of its base level
     CubeSample sample_cube(const std::string& sampler, glm::dvec3 direction) const;
 };
 

@@ -1,4 +1,5 @@
 #include "render/effect_resources.hpp"
+#include "render/measured_brdf_texture.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -50,6 +51,7 @@ TextureData load_resource(const effect::TextureResource& resource, const std::ve
     if (paths.size() != 1)
         throw Error("texture " + resource.name + " names " + std::to_string(paths.size()) +
                     " files; only a cube map takes six");
+    if (resource.type == TextureType::Tex3D && is_measured_brdf_file(paths[0])) return load_measured_brdf_texture(paths[0]);
     TextureData data = texture::load_texture_file(paths[0]);
     switch (resource.type) {
         case TextureType::Cube: return data.type == TextureType::Cube ? data : texture::split_cube_cross(data);
