@@ -128,10 +128,15 @@ TEST_CASE("the Fit tab's fit shows the fitted BRDF: the same pixel as fxview pic
     REQUIRE(run("brdf-grid --model ashikhmin-fit --param cd=0.3,0.1,0.1 --param cs=0.6,0.5,0.4 --param ns=30 --out " + grid).exit_code == 0);
     REQUIRE(run("fit " + grid + " --preset " + preset).exit_code == 0);
     const std::string script = temp_path("viewer-fit.txt"), broken = temp_path("viewer-fit/missing.csv");
-    std::ofstream(script) << "fit " << grid << "\npick 64 64\n";
+    const std::string shot = temp_path("viewer-fit/window.png");
+    std::ofstream(script) << "fit " << grid << "\npick 64 64\ntab Fit\nscreenshot " << shot << "\n";
     const std::string analytic = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/analytic.fx";
-    const Result r = run("view " + analytic + " --render-size 128x128 --script " + script + " --frames 2");
+    const Result r = run("view " + analytic + " --window 1024x900 --render-size 128x128 --script " + script + " --frames 2");
     REQUIRE(r.exit_code == 0);
+    // The Fit tab shows the result and, below it, the measured | model | difference preview: the
+    // lower half of the panel holds far more colours than an empty panel's few greys.
+    const auto window = load_png(shot);
+    CHECK(distinct_colours(window, 0, 450, 400, 900) > 50);
     std::istringstream lines(r.out);
     std::string fit_line, pick_line;
     std::getline(lines, fit_line);

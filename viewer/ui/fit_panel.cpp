@@ -1,11 +1,14 @@
 #include "ui/fit_panel.hpp"
 
+#include <glad/gl.h>
 #include <imgui.h>
 
 #include <vector>
 
+#include "app/fit_preview.hpp"
 #include "core/error.hpp"
 #include "fit/measurement.hpp"
+#include "image/color_encoding.hpp"
 
 namespace fxview::ui {
 namespace {
@@ -19,16 +22,36 @@ bool has_fit_parameters(const render::EffectSession& session) {
 
 }  // namespace
 
+// The preview image as an 8-bit sRGB texture for ImGui (the viewer's UI draws sRGB bytes).
+void upload_preview(FitPanelState& state, const fit::BrdfGrid& measured, const fit::FitResult& result) {
+    app::PreviewOptions options;
+    options.brighten = state.preview_brighten;
+    const image::FloatImage preview = app::fit_preview(measured, fit::evaluate_fit(measured, result), options);
+    std::vector<std::uint8_t> bytes(static_cast<size_t>(preview.width) * preview.height * 4);
+    for (size_t i = 0; i < bytes.size(); ++i)
+        bytes[i] = image::to_8bit(preview.data[i], i % 4 == 3 ? image::Encoding::Linear : image::Encoding::Srgb);
+    state.preview = gl::create_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(state.preview.get(), 1, GL_RGBA8, preview.width, preview.height);
+    glTextureSubImage2D(state.preview.get(), 0, 0, 0, preview.width, preview.height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    glTextureParameteri(state.preview.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(state.preview.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    state.preview_width = preview.width;
+    state.preview_height = preview.height;
+}
+
 bool run_fit(FitPanelState& state, render::EffectSession* session) {
     try {
         const fit::BrdfGrid measured = fit::read_measurement(state.path);
         fit::FitResult result = fit::fit_ashikhmin_shirley(measured, state.options);
+        upload_preview(state, measured, result);
         if (session && has_fit_parameters(*session)) {
             auto& numbers = session->values().numbers;
             numbers["FitDiffuse"] = {result.cd[0], result.cd[1], result.cd[2]};
             numbers["FitSpecular"] = {result.cs[0], result.cs[1], result.cs[2]};
             numbers["FitExponent"] = {result.ns};
-            session->select_technique(kTechnique);
+            // analytic.fx shows the fit with AshikhminShirleyFit; measured.fx keeps its technique
+            // (Measured, Fitted or Difference), which reads the same parameters.
+            if (session->effect().find_technique(kTechnique)) session->select_technique(kTechnique);
             state.error.clear();
         } else {
             state.error = "fitted, but the effect has no FitDiffuse/FitSpecular/FitExponent to show it: load effects/brdf/analytic.fx";
@@ -61,6 +84,13 @@ void draw_fit_panel(FitPanelState& state, render::EffectSession* session) {
     std::vector<float> curve(r.error_per_iteration.begin(), r.error_per_iteration.end());
     if (!curve.empty())
         ImGui::PlotLines("e per iteration", curve.data(), static_cast<int>(curve.size()), 0, nullptr, FLT_MAX, FLT_MAX, ImVec2(0, 80));
+    if (state.preview.get() != 0) {
+        ImGui::TextDisabled("measured | model | difference (x%.0f); rows: theta_in blocks, theta_out; columns: phi_out", state.preview_brighten);
+        // Fit the image to the panel's width, keeping its aspect.
+        const float width = ImGui::GetContentRegionAvail().x;
+        const float height = width * static_cast<float>(state.preview_height) / static_cast<float>(state.preview_width);
+        ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(state.preview.get())), ImVec2(width, height));
+    }
 }
 
 }  // namespace fxview::ui

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <set>
 
 #include "app/effect_options.hpp"
 #include "context/context.hpp"
@@ -391,6 +392,13 @@ private:
     }
 
     // --- panels ----------------------------------------------------------------------------
+    // A tab asked for by a script (`tab NAME`) is selected once, then the user's clicks rule again.
+    ImGuiTabItemFlags tab_flags(const char* name) {
+        if (requested_tab_ != name) return 0;
+        requested_tab_.clear();
+        return ImGuiTabItemFlags_SetSelected;
+    }
+
     void draw_ui(int window_width, int window_height) {
         const float panel_width = std::min(420.0f, window_width * 0.4f);
         ImGui::SetNextWindowPos(ImVec2(0, 0));
@@ -399,27 +407,27 @@ private:
         ImGui::Text("%.1f FPS  frame %.2f ms  GPU %.2f ms%s", frame_seconds_ > 0 ? 1.0 / frame_seconds_ : 0.0,
                     frame_seconds_ * 1e3, gpu_ms_, paused_ ? "  (paused)" : "");
         if (ImGui::BeginTabBar("tabs")) {
-            if (ImGui::BeginTabItem("Effect")) {
+            if (ImGui::BeginTabItem("Effect", nullptr, tab_flags("Effect"))) {
                 draw_effect_tab();
                 ImGui::EndTabItem();
             }
-            if (ImGui::BeginTabItem("Scene")) {
+            if (ImGui::BeginTabItem("Scene", nullptr, tab_flags("Scene"))) {
                 draw_scene_tab();
                 ImGui::EndTabItem();
             }
-            if (ImGui::BeginTabItem("Textures")) {
+            if (ImGui::BeginTabItem("Textures", nullptr, tab_flags("Textures"))) {
                 draw_texture_tab();
                 ImGui::EndTabItem();
             }
-            if (ImGui::BeginTabItem("Pick")) {
+            if (ImGui::BeginTabItem("Pick", nullptr, tab_flags("Pick"))) {
                 draw_pick_tab();
                 ImGui::EndTabItem();
             }
-            if (ImGui::BeginTabItem("View")) {
+            if (ImGui::BeginTabItem("View", nullptr, tab_flags("View"))) {
                 draw_view_tab();
                 ImGui::EndTabItem();
             }
-            if (ImGui::BeginTabItem("Fit")) {
+            if (ImGui::BeginTabItem("Fit", nullptr, tab_flags("Fit"))) {
                 draw_fit_panel(fit_panel_, session_.get());
                 ImGui::EndTabItem();
             }
@@ -774,6 +782,11 @@ private:
         } else if (a.verb == "skybox") {
             skybox_name_ = args[0] == "off" ? "" : args[0];
             if (!skybox_name_.empty() && !skybox_texture()) throw UsageError("no cube map texture '" + args[0] + "' in the effect");
+        } else if (a.verb == "tab") {
+            static const std::set<std::string> tabs = {"Effect", "Scene", "Textures", "Pick", "View", "Fit"};
+            if (!tabs.count(args[0])) throw UsageError("no tab '" + args[0] + "' (Effect, Scene, Textures, Pick, View, Fit)");
+            requested_tab_ = args[0];
+            wait_frames_ = 1;
         } else if (a.verb == "fit") {
             std::snprintf(fit_panel_.path, sizeof fit_panel_.path, "%s", args[0].c_str());
             if (!run_fit(fit_panel_, session_.get())) throw Error(fit_panel_.error);
@@ -810,6 +823,7 @@ private:
     double frame_seconds_ = 0, gpu_ms_ = 0;
     Pick pick_;
     FitPanelState fit_panel_;
+    std::string requested_tab_;
     std::vector<std::string> browser_files_, pending_window_shots_;
     char path_input_[512] = "effects/debug.fx", preset_input_[512] = "preset.json", obj_input_[512] = "model.obj",
          texture_input_[512] = "textures/checker.png", shot_input_[512] = "out/screenshot.png";
