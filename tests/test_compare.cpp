@@ -30,7 +30,7 @@ app::RenderRequest sphere_request(std::vector<std::string> sets = {}) {
 }  // namespace
 
 TEST_CASE("every spectral technique matches its CPU reference") {
-    const auto techniques = app::technique_names(std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/wavelength.fx");
+    const auto techniques = app::technique_names(app::EffectOptions{std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/wavelength.fx"});
     CHECK(techniques.size() == 9);
     for (const auto& variant : std::vector<std::vector<std::string>>{
              {}, {"ByteCmf=true", "Observer=1", "Steps=5", "ObjectSpectrum=TCS09", "OutputMode=1"},
@@ -72,7 +72,7 @@ TEST_CASE("the debug views and Plain match their CPU references") {
     request.effect.path = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/debug.fx";
     request.scene.objects.front().mesh = "torus";
     request.scene.objects.front().pose.rotation = glm::angleAxis(0.6f, glm::normalize(glm::vec3(1, 1, 0)));
-    for (const auto& technique : app::technique_names(request.effect.path)) {
+    for (const auto& technique : app::technique_names(request.effect)) {
         CAPTURE(technique);
         const app::CompareResult r = app::compare_technique(request, technique, {});
         CHECK(r.has_reference);
@@ -98,7 +98,7 @@ TEST_CASE("every thin-film technique matches its CPU reference (exact ones: char
     app::RenderRequest request = sphere_request();
     request.width = request.height = 96;
     request.effect.path = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/thinfilm.fx";
-    const auto techniques = app::technique_names(request.effect.path);
+    const auto techniques = app::technique_names(request.effect);
     CHECK(techniques.size() == 10);
     // Default soap-like film; then thick films on a metal-like substrate seen from the light with a
     // 16-layer dispersive stack, coarse steps and the 10° observer; then a film thinner than its surroundings
@@ -144,7 +144,7 @@ TEST_CASE("every analytic BRDF matches viewer/brdf, also with sharp highlights; 
     app::RenderRequest request = sphere_request();
     request.width = request.height = 96;
     request.effect.path = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/analytic.fx";
-    const auto techniques = app::technique_names(request.effect.path);
+    const auto techniques = app::technique_names(request.effect);
     CHECK(techniques.size() == 6);
     for (const auto& variant : std::vector<std::vector<std::string>>{
              {},
@@ -186,7 +186,7 @@ TEST_CASE("CD diffraction on the disc matches its references; a wrong track spac
              {}, {"Tracks=60", "TrackSpacing=740", "Steps=3", "Threshold=0.2", "LightSpectrum=F11", "SubstrateSpectrum=TCS09",
                   "EnvironmentWeight=0"}}) {
         request.effect.sets = variant;
-        for (const auto& technique : app::technique_names(request.effect.path)) {
+        for (const auto& technique : app::technique_names(request.effect)) {
             CAPTURE(technique);
             const app::CompareResult r = app::compare_technique(request, technique, {});
             CHECK(r.has_reference);
@@ -197,7 +197,7 @@ TEST_CASE("CD diffraction on the disc matches its references; a wrong track spac
         }
     }
     request.effect.sets = {};
-    for (const auto& technique : app::technique_names(request.effect.path)) {
+    for (const auto& technique : app::technique_names(request.effect)) {
         CAPTURE(technique);
         CHECK(!app::compare_technique(request, technique, {"TrackSpacing=1601"}).pass);
     }
@@ -222,7 +222,7 @@ TEST_CASE("every technique of every shipped effect has a CPU reference") {
     int techniques = 0;
     for (const auto& entry : std::filesystem::recursive_directory_iterator(FXVIEW_SOURCE_EFFECTS_DIR)) {
         if (entry.path().extension() != ".fx") continue;
-        for (const auto& technique : app::technique_names(entry.path().string())) {
+        for (const auto& technique : app::technique_names(app::EffectOptions{entry.path().string()})) {
             CAPTURE(entry.path().string());
             CAPTURE(technique);
             CHECK(reference::find_reference(entry.path().stem().string(), technique) != nullptr);
@@ -244,7 +244,7 @@ TEST_CASE("a measured BRDF on a mesh: the table lookup matches the CPU sampler, 
                          grid);
     for (const auto& variant : std::vector<std::vector<std::string>>{{}, {"Measured=" + grid, "FitExponent=300"}}) {
         request.effect.sets = variant;
-        for (const auto& technique : app::technique_names(request.effect.path)) {
+        for (const auto& technique : app::technique_names(request.effect)) {
             CAPTURE(technique);
             CAPTURE(variant.size());
             const app::CompareResult r = app::compare_technique(request, technique, {});

@@ -350,7 +350,7 @@ TEST_CASE("presets save and restore every value; bad presets are refused whole")
     std::ofstream(bad) << R"({"parameters": {"Wvp": 1}})";
     CHECK_THROWS_WITH_AS(effect::load_preset(bad, e, untouched), doctest::Contains("no editable parameter"), Error);
     std::ofstream(bad) << "{ not json";
-    CHECK_THROWS_WITH_AS(effect::load_preset(bad, e, untouched), doctest::Contains("bad_preset.json: not a valid JSON preset"), Error);
+    CHECK_THROWS_WITH_AS(effect::load_preset(bad, e, untouched), doctest::Contains("bad_preset.json:1: not a valid JSON preset"), Error);
 }
 
 TEST_CASE("a sampler3D reads the slices of a stacked image") {

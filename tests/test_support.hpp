@@ -2,6 +2,7 @@
 #pragma once
 #include <doctest/doctest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -44,7 +45,10 @@ struct Result {
 };
 
 inline Result run(const std::string& arguments) {
-    const std::string err_file = temp_path("stderr.txt");
+    // One file per process and call: CTest runs test binaries side by side, and a shared name lets
+    // one test read another's messages.
+    static int calls = 0;
+    const std::string err_file = temp_path("stderr-" + std::to_string(getpid()) + "-" + std::to_string(++calls) + ".txt");
     const std::string command = std::string(FXVIEW_BINARY) + " " + arguments + " 2>" + err_file;
     Result result;
     FILE* pipe = popen(command.c_str(), "r");
@@ -59,6 +63,8 @@ inline Result run(const std::string& arguments) {
     std::stringstream text;
     text << err.rdbuf();
     result.err = text.str();
+    err.close();
+    std::filesystem::remove(err_file);
     return result;
 }
 

@@ -143,7 +143,7 @@ TEST_CASE("FTXT: size line, R;G;B;A per texel, incomplete data rejected and disc
     CHECK_THROWS_WITH_AS(load_texture_file(too_many), doctest::Contains("toomany.ftxt:3: more texel lines"), Error);
     const std::string not_number = temp_path("nan.ftxt");
     std::ofstream(not_number) << "1 1\n1;x;1;1\n";
-    CHECK_THROWS_WITH_AS(load_texture_file(not_number), doctest::Contains("nan.ftxt:2: 'x' is not a number"), Error);
+    CHECK_THROWS_WITH_AS(load_texture_file(not_number), doctest::Contains("nan.ftxt:2: 'x' is not a finite number"), Error);
     const std::string bad_size = temp_path("badsize.ftxt");
     std::ofstream(bad_size) << "0 4\n";
     CHECK_THROWS_WITH_AS(load_texture_file(bad_size), doctest::Contains("badsize.ftxt:1: bad FTXT size"), Error);

@@ -114,6 +114,7 @@ TEST_CASE("a cube map becomes the skybox behind the objects") {
     const std::string script = temp_path("sky-script.txt"), plain = temp_path("no-sky.png"), sky = temp_path("sky.png");
     std::ofstream(script) << "render-screenshot " << plain << "\nskybox SkyTexture\nrender-screenshot " << sky << "\nskybox Nope\n";
     const Result r = run("view " + effect + " -t Mirror --render-size 96x96 --script " + script + " --frames 2");
+    CAPTURE(r.err);
     CHECK(r.exit_code == 1);  // the last line names no cube map: reported, the run goes on
     CHECK(r.err.find("no cube map texture 'Nope'") != std::string::npos);
     const auto before = load_png(plain), after = load_png(sky);
@@ -151,5 +152,5 @@ TEST_CASE("the Fit tab's fit shows the fitted BRDF: the same pixel as fxview pic
     std::ofstream(script) << "fit " << broken << "\n";
     const Result failed = run("view " + analytic + " --render-size 64x64 --script " + script + " --frames 2");
     CHECK(failed.exit_code == 1);
-    CHECK(failed.err.find("missing.csv: cannot open") != std::string::npos);
+    CHECK(failed.err.find("missing.csv: no such file") != std::string::npos);
 }

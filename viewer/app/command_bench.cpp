@@ -51,7 +51,7 @@ CommandRunner add_bench_command(CLI::App& app) {
         const auto info = context::query_context_info();
         const auto session = open_effect_session(request.effect);
         const std::vector<std::string> techniques =
-            request.effect.technique.empty() ? technique_names(request.effect.path) : std::vector<std::string>{request.effect.technique};
+            request.effect.technique.empty() ? technique_names(request.effect) : std::vector<std::string>{request.effect.technique};
         gl::RenderTarget target({request.width, request.height, 1, request.samples});
         gl::Query query = gl::create_query(GL_TIME_ELAPSED);
         if (!o->json)

@@ -9,49 +9,71 @@
 
 namespace fxview::app {
 
+namespace {
+
+// Prints an error as it is ("file:line: message", one or several lines).
+void print_error(const std::string& message) {
+    std::cout << message;
+    if (message.empty() || message.back() != '\n') std::cout << "\n";
+}
+
+// Checks one effect; returns the number of problems found. Nothing a file does stops the check of
+// the next file: every exception is reported against the file it came from.
+int check_effect(const std::string& path, const effect::LoadOptions& load_options) {
+    try {
+        const effect::Effect effect = effect::load_effect(path, load_options);
+        int broken = 0;
+        for (const auto& technique : effect.techniques) {
+            try {
+                effect::compile_technique(effect, technique);
+            } catch (const effect::EffectError& error) {
+                print_error(error.what());
+                ++broken;
+            }
+        }
+        try {  // textures: every file found, readable, allowed and of the declared shape
+            render::EffectResources resources(effect, effect::default_values(effect), texture_folders());
+        } catch (const effect::EffectError& error) {
+            print_error(error.what());
+            ++broken;
+        }
+        if (broken == 0) std::cout << path << ": ok (" << effect.techniques.size() << " techniques)\n";
+        return broken;
+    } catch (const effect::EffectError& error) {
+        print_error(error.what());
+    } catch (const std::bad_alloc&) {
+        print_error(path + ":0: out of memory while checking this effect");
+    } catch (const std::exception& error) {
+        print_error(path + ":0: " + error.what());
+    }
+    return 1;
+}
+
+}  // namespace
+
 CommandRunner add_check_command(CLI::App& app) {
     struct Options {
         std::vector<std::string> paths;
         std::string backend = "egl";
+        AccessOptions access;
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand(
         "check", "Parse effects and compile every technique; print each error as file:line: message");
-    command->add_option("effects", options->paths, "Effect files")->required();
+    command->add_option("effects", options->paths, "Effect files (each is checked and reported)")->required();
     command->add_option("--backend", options->backend, "GL context used to compile")->capture_default_str();
+    add_access_options(*command, options->access);
     return [options] {
+        const effect::LoadOptions load_options = effect_load_options(options->access);
         context::ContextOptions context_options;
         context_options.backend = context::parse_backend(options->backend);
         context_options.window_visible = false;
         const auto context = context::create_context(context_options);
-        int failures = 0;
-        for (const auto& path : options->paths) {
-            try {
-                const effect::Effect effect = effect::load_effect(path, effect_load_options());
-                int broken = 0;
-                for (const auto& technique : effect.techniques) {
-                    try {
-                        effect::compile_technique(effect, technique);
-                    } catch (const effect::EffectError& error) {
-                        std::cout << error.what();
-                        if (std::string(error.what()).back() != '\n') std::cout << "\n";
-                        ++broken;
-                    }
-                }
-                try {  // textures: every file found, readable and of the declared shape
-                    render::EffectResources resources(effect, effect::default_values(effect), texture_folders());
-                } catch (const effect::EffectError& error) {
-                    std::cout << error.what() << "\n";
-                    ++broken;
-                }
-                if (broken == 0) std::cout << path << ": ok (" << effect.techniques.size() << " techniques)\n";
-                failures += broken;
-            } catch (const effect::EffectError& error) {
-                std::cout << error.what() << "\n";
-                ++failures;
-            }
-        }
-        return failures == 0 ? 0 : 1;
+        int failed_files = 0;
+        for (const auto& path : options->paths) failed_files += check_effect(path, load_options) > 0 ? 1 : 0;
+        if (options->paths.size() > 1)
+            std::cout << options->paths.size() - static_cast<size_t>(failed_files) << " of " << options->paths.size() << " effects ok\n";
+        return failed_files == 0 ? 0 : 1;
     };
 }
 

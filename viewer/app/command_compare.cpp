@@ -32,7 +32,7 @@ CommandRunner add_compare_command(CLI::App& app) {
         if (request.effect.path.empty()) throw UsageError("compare needs an effect file");
         if (request.samples > 1) throw UsageError("compare renders without MSAA: every pixel must come from one fragment");
         std::vector<std::string> techniques;
-        if (request.effect.technique.empty()) techniques = technique_names(request.effect.path);
+        if (request.effect.technique.empty()) techniques = technique_names(request.effect);
         else techniques = {request.effect.technique};
         bool all_pass = true;
         for (const auto& technique : techniques) {

@@ -25,13 +25,15 @@ CommandRunner add_list_command(CLI::App& app) {
     struct Options {
         std::string path;
         bool json = false;
+        AccessOptions access;
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("list", "List an effect's techniques, passes and parameters");
     command->add_option("effect", options->path, "Effect file")->required();
     command->add_flag("--json", options->json, "Print one JSON object");
+    add_access_options(*command, options->access);
     return [options] {
-        const effect::Effect effect = effect::load_effect(options->path, effect_load_options());
+        const effect::Effect effect = effect::load_effect(options->path, effect_load_options(options->access));
         nlohmann::json techniques = nlohmann::json::array();
         for (const auto& technique : effect.techniques) {
             nlohmann::json passes = nlohmann::json::array();

@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "core/error.hpp"
 #include "effect/preset.hpp"
 #include "spectral/library.hpp"
 
@@ -15,17 +16,42 @@ void add_effect_options(CLI::App& command, EffectOptions& options) {
         ->allow_extra_args(false);
     command.add_option("--preset", options.preset, "Load parameter values from a JSON preset (before --set)");
     command.add_option("--save-preset", options.save_preset, "Save the parameter values used as a JSON preset");
+    add_access_options(command, options.access);
 }
 
-effect::LoadOptions effect_load_options() {
+void add_access_options(CLI::App& command, AccessOptions& options) {
+    command.add_option("--allow-path", options.allow_paths,
+                       "Let effects read files below DIR too (default: only the effect's folder and the project's effects/lib, "
+                       "textures/ and spectra/)");
+    std::string names;
+    for (const auto& info : limit_infos()) names += (names.empty() ? "" : ", ") + std::string(info.name);
+    command.add_option("--limit", options.limits, "Change a resource budget NAME=VALUE (" + names + "; K/M/G suffixes)");
+}
+
+ResourceLimits resource_limits(const AccessOptions& options) {
+    ResourceLimits limits;
+    for (const auto& assignment : options.limits) set_limit(limits, assignment);
+    return limits;
+}
+
+effect::LoadOptions effect_load_options(const AccessOptions& access) {
     const char* override_dir = std::getenv("FXVIEW_EFFECTS_DIR");
     const std::filesystem::path root = override_dir ? override_dir : FXVIEW_SOURCE_EFFECTS_DIR;
-    effect::LoadOptions options{{(root / "lib").string()}, {}};
+    effect::LoadOptions options;
+    options.include_dirs = {(root / "lib").string()};
+    options.access.allow_folder(root / "lib");
+    for (const auto& folder : texture_folders()) options.access.allow_folder(folder);
+    options.access.allow_folder(spectra_folder());
+    for (const auto& folder : access.allow_paths) {
+        std::error_code error;
+        if (!std::filesystem::is_directory(folder, error)) throw UsageError("--allow-path " + folder + ": no such folder");
+        options.access.allow_folder(folder);
+    }
+    options.limits = resource_limits(access);
     // Spectrum parameters (UIItems = "spectral:library") list the library's names, so that
     // `--set LightSpectrum=D65` works; a missing or broken library only leaves them as numbers.
-    const char* spectra_dir = std::getenv("FXVIEW_SPECTRA_DIR");
     try {
-        const auto library = spectral::load_library(std::string(spectra_dir ? spectra_dir : FXVIEW_SOURCE_SPECTRA_DIR) + "/library.txt");
+        const auto library = spectral::load_library(spectra_folder() + "/library.txt");
         for (const auto& entry : library.entries) options.item_lists["spectral:library"].push_back(entry.named.name);
     } catch (const std::exception&) {
     }
@@ -33,7 +59,15 @@ effect::LoadOptions effect_load_options() {
 }
 
 std::unique_ptr<render::EffectSession> open_effect_session(const EffectOptions& options) {
-    auto session = std::make_unique<render::EffectSession>(options.path, effect_load_options(), texture_folders());
+    effect::LoadOptions load_options = effect_load_options(options.access);
+    // A texture file named on the command line (--set Sampler=FILE) is the user's own choice.
+    for (const auto& assignment : options.sets)
+        if (const size_t equals = assignment.find('='); equals != std::string::npos) {
+            std::error_code error;
+            const std::string value = assignment.substr(equals + 1);
+            if (std::filesystem::is_regular_file(value, error)) load_options.access.allow_file(value);
+        }
+    auto session = std::make_unique<render::EffectSession>(options.path, std::move(load_options), texture_folders());
     if (!options.technique.empty()) session->select_technique(options.technique);
     if (!options.preset.empty()) {
         const effect::Preset preset = effect::load_preset(options.preset, session->effect(), session->values());
@@ -43,6 +77,11 @@ std::unique_ptr<render::EffectSession> open_effect_session(const EffectOptions& 
     for (const auto& assignment : options.sets) effect::set_value_from_text(session->effect(), session->values(), assignment);
     if (!session->values().textures.empty()) session->reload_textures();
     return session;
+}
+
+std::string spectra_folder() {
+    const char* override_dir = std::getenv("FXVIEW_SPECTRA_DIR");
+    return override_dir ? override_dir : FXVIEW_SOURCE_SPECTRA_DIR;
 }
 
 std::vector<std::string> texture_folders() {

@@ -12,19 +12,33 @@
 
 namespace fxview::app {
 
+// What effects may read and how much: --allow-path DIR (repeatable) and --limit NAME=VALUE.
+struct AccessOptions {
+    std::vector<std::string> allow_paths;
+    std::vector<std::string> limits;
+};
+void add_access_options(CLI::App& command, AccessOptions& options);
+// The budgets with every --limit applied; UsageError for an unknown name or a bad value.
+ResourceLimits resource_limits(const AccessOptions& options);
+
 struct EffectOptions {
     std::string path;  // empty: the built-in debug shader
     std::string technique;
     std::vector<std::string> sets;
     std::string preset;       // JSON preset applied before --set
     std::string save_preset;  // writes the values used
+    AccessOptions access;
 };
 
 void add_effect_options(CLI::App& command, EffectOptions& options);
-effect::LoadOptions effect_load_options();
+// The include path, the file-access policy (the search roots effects/lib, textures/ and spectra/
+// plus every --allow-path folder; the effect's own folder is added when it loads) and the budgets.
+effect::LoadOptions effect_load_options(const AccessOptions& access);
 // Where texture files are searched after the effect's own folder: textures/ of the source tree
 // (or $FXVIEW_TEXTURES_DIR).
 std::vector<std::string> texture_folders();
+// spectra/ of the source tree (or $FXVIEW_SPECTRA_DIR).
+std::string spectra_folder();
 
 // Opens the effect of `options` as a session: technique, then preset, then --set values (texture
 // overrides reload the textures). Throws EffectError/UsageError like the steps it takes.

@@ -13,8 +13,8 @@
 
 namespace fxview::app {
 
-std::vector<std::string> technique_names(const std::string& effect_path) {
-    const effect::Effect effect = effect::load_effect(effect_path, effect_load_options());
+std::vector<std::string> technique_names(const EffectOptions& options) {
+    const effect::Effect effect = effect::load_effect(options.path, effect_load_options(options.access));
     std::vector<std::string> names;
     for (const auto& t : effect.techniques) names.push_back(t.name);
     return names;

@@ -34,6 +34,6 @@ struct CompareResult {
 // NAME=VALUE assignments given to the CPU side only (to show that a comparison can fail).
 CompareResult compare_technique(const RenderRequest& request, const std::string& technique,
                                 const std::vector<std::string>& reference_sets);
-std::vector<std::string> technique_names(const std::string& effect_path);
+std::vector<std::string> technique_names(const EffectOptions& effect);
 
 }  // namespace fxview::app

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <new>
 #include <map>
 
 #include "app/commands.hpp"
@@ -49,6 +50,9 @@ int main(int argc, char** argv) {
     } catch (const UsageError& e) {
         std::cerr << "fxview: " << e.what() << "\n";
         return 2;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "fxview: error: out of memory (a file asked for more than this machine has; see --limit)\n";
+        return 1;
     } catch (const std::exception& e) {
         std::cerr << "fxview: error: " << e.what() << "\n";
         return 1;

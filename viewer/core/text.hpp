@@ -4,6 +4,7 @@
 #include <cctype>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace fxview {
 
@@ -15,6 +16,23 @@ inline std::string to_lower(std::string text) {
 // ".png" for "Some/File.PNG": extensions compare case-insensitively everywhere.
 inline std::string lower_extension(const std::string& path) {
     return to_lower(std::filesystem::path(path).extension().string());
+}
+
+}  // namespace fxview
+
+namespace fxview {
+
+// Text from a file as it may appear inside a message: at most `max_chars` characters (longer text
+// ends in "..."), control characters as '?', so that one hostile token can neither flood a terminal
+// nor hide in it. Bytes of UTF-8 sequences are kept (labels may say "κ").
+inline std::string excerpt(std::string_view text, size_t max_chars = 40) {
+    std::string out;
+    for (size_t i = 0; i < text.size() && i < max_chars; ++i) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        out += (c >= 0x20 && c != 0x7f) ? static_cast<char>(c) : '?';
+    }
+    if (text.size() > max_chars) out += "...";
+    return out;
 }
 
 }  // namespace fxview

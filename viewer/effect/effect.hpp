@@ -108,6 +108,10 @@ struct Effect {
     std::vector<TextureResource> textures;
     std::vector<ShaderBlock> shaders;
     std::vector<Technique> techniques;
+    // What the effect may read (its folder, the search roots, folders the user allowed) and how
+    // much: textures and data files are loaded under the same rules as its includes.
+    FileAccessPolicy access;
+    ResourceLimits limits;
 
     const Parameter* find_parameter(const std::string& name) const;
     const ShaderBlock* find_shader(const std::string& name) const;

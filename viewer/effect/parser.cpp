@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
+#include <filesystem>
 #include <map>
 #include <set>
 
@@ -79,7 +81,10 @@ public:
 private:
     SourceLocation at(const Token& token) const { return effect_.sources.locate(token.begin); }
 
-    [[noreturn]] void fail(const Token& token, const std::string& message) const { throw EffectError(at(token), message); }
+    // Messages quote tokens; excerpt() keeps one hostile token from making a megabyte message.
+    [[noreturn]] void fail(const Token& token, const std::string& message) const {
+        throw EffectError(at(token), excerpt(message, 400));
+    }
 
     void check_unterminated() const {
         if (lexer_.unterminated != std::string_view::npos)
@@ -89,8 +94,12 @@ private:
     Token next() {
         Token token = lexer_.next();
         check_unterminated();
+        // GLSL allows identifiers of up to 1024 characters; longer words are data, not source.
+        if ((token.kind == TokenKind::Identifier || token.kind == TokenKind::Number) && token.text.size() > kMaxWord)
+            fail(token, "a word of " + std::to_string(token.text.size()) + " characters (at most " + std::to_string(kMaxWord) + ")");
         return token;
     }
+    static constexpr size_t kMaxWord = 1024;
 
     Token expect_identifier(const std::string& what) {
         const Token token = next();
@@ -207,8 +216,12 @@ private:
         if (accept('[')) {
             const Token size = next();
             if (size.kind != TokenKind::Number) fail(size, "expected an array size");
-            parameter.array_size = static_cast<int>(parse_number(size, false));
-            if (parameter.array_size < 1) fail(size, "array size must be positive");
+            const double elements = parse_number(size, false);
+            if (!(elements >= 1) || elements != std::floor(elements)) fail(size, "array size must be a positive whole number");
+            if (elements > static_cast<double>(effect_.limits.array_elements))
+                fail(size, "array of " + excerpt(size.text) + " elements exceeds the budget array-elements = " +
+                               std::to_string(effect_.limits.array_elements) + " (raise it with --limit array-elements=N)");
+            parameter.array_size = static_cast<int>(elements);
             expect(']', "after the array size");
         }
         if (accept(':')) parameter.semantic = expect_identifier("a semantic after ':'").text;
@@ -425,6 +438,10 @@ private:
             for (;;) {
                 const Token token = next();
                 if (token.kind == TokenKind::End) fail(first, "declaration starting with '" + first.text + "' never ends (missing ';' or '}')");
+                // Effect keywords never occur inside a GLSL declaration: a ';' is missing before them.
+                if (token.kind == TokenKind::Identifier && (token.text == "technique" || token.text == "GLSLShader"))
+                    fail(token, "expected ';' before '" + token.text + "' (the declaration starting with '" + first.text + "' at " +
+                                    at(first).str() + " is not finished)");
                 end = token.end;
                 if (token.kind != TokenKind::Punct) continue;
                 if (token.text == ";") break;
@@ -470,7 +487,12 @@ private:
 Effect load_effect(const std::string& path, const LoadOptions& options) {
     Effect effect;
     effect.path = path;
-    effect.sources = SourceMap::load(path, options.include_dirs);
+    effect.limits = options.limits;
+    effect.access = options.access;
+    for (const auto& dir : options.include_dirs) effect.access.allow_folder(dir);  // search roots are readable
+    effect.access.allow_folder(std::filesystem::path(path).parent_path().empty() ? std::filesystem::path(".")
+                                                                                 : std::filesystem::path(path).parent_path());
+    effect.sources = SourceMap::load(path, options.include_dirs, effect.limits, effect.access);
     Parser(effect).parse();
     for (auto& parameter : effect.parameters)
         if (parameter.ui.items.size() == 1)

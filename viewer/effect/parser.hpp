@@ -5,12 +5,18 @@
 #include <string>
 #include <vector>
 
+#include "core/file_access.hpp"
+#include "core/limits.hpp"
 #include "effect/effect.hpp"
 
 namespace fxview::effect {
 
 struct LoadOptions {
     std::vector<std::string> include_dirs;  // searched after the including file's folder (effects/lib)
+    // Folders every effect may read besides its own (search roots, --allow-path); the effect's
+    // folder is added when it loads.
+    FileAccessPolicy access;
+    ResourceLimits limits;
     // Combo entries filled in by the application: a parameter whose UIItems is exactly one of these
     // keys (e.g. "spectral:library") gets the list (e.g. the library's spectrum names).
     std::map<std::string, std::vector<std::string>> item_lists;

@@ -2,8 +2,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <iterator>
 
+#include "core/limits.hpp"
+#include "core/text.hpp"
 #include "effect/parser.hpp"
 
 namespace fxview::effect {
@@ -21,16 +26,31 @@ void save_preset(const std::string& path, const Effect& effect, const std::strin
 }
 
 Preset load_preset(const std::string& path, const Effect& effect, ParameterValues& values) {
-    std::ifstream file(path);
+    checked_file_size(path, effect.limits);
+    std::ifstream file(path, std::ios::binary);
     if (!file) throw Error(path + ": cannot open preset");
+    const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
     nlohmann::json json;
     try {
-        json = nlohmann::json::parse(file);
+        json = nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& error) {
-        throw Error(path + ": not a valid JSON preset: " + error.what());
+        // "file:line: message" from the byte offset, without the library's own prefix and excerpt.
+        const size_t offset = std::min(error.byte == 0 ? size_t{0} : error.byte - 1, text.size());
+        const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n');
+        throw Error(path + ":" + std::to_string(line) + ": not a valid JSON preset (syntax error at byte " + std::to_string(error.byte) + ")");
+    } catch (const nlohmann::json::exception&) {
+        throw Error(path + ":1: not a valid JSON preset");
     }
+    // Messages name the line where the entry's key first appears.
+    const auto where = [&](const std::string& key) {
+        const size_t at = text.find("\"" + key + "\"");
+        const auto line = at == std::string::npos ? 1 : 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n');
+        return path + ":" + std::to_string(line) + ": ";
+    };
     if (!json.is_object() || !json.contains("parameters") || !json["parameters"].is_object())
-        throw Error(path + ": a preset needs a \"parameters\" object");
+        throw Error(where("parameters") + "a preset needs a \"parameters\" object");
+    if (json.contains("effect") && !json["effect"].is_string()) throw Error(where("effect") + "\"effect\" must be a string");
+    if (json.contains("technique") && !json["technique"].is_string()) throw Error(where("technique") + "\"technique\" must be a string");
     Preset preset;
     preset.effect = json.value("effect", "");
     preset.technique = json.value("technique", "");
@@ -38,9 +58,9 @@ Preset load_preset(const std::string& path, const Effect& effect, ParameterValue
     for (const auto& [name, value] : json["parameters"].items()) {
         const Parameter* parameter = effect.find_parameter(name);
         if (!parameter || !parameter->semantic.empty())
-            throw Error(path + ": preset sets '" + name + "', which " + effect.path + " has no editable parameter for");
+            throw Error(where(name) + "preset sets '" + excerpt(name) + "', which " + effect.path + " has no editable parameter for");
         if (is_sampler_type(parameter->type)) {
-            if (!value.is_string()) throw Error(path + ": preset value of sampler " + name + " must be a file name");
+            if (!value.is_string()) throw Error(where(name) + "preset value of sampler " + name + " must be a file name");
             updated.textures[name] = value.get<std::string>();
             continue;
         }
@@ -48,13 +68,15 @@ Preset load_preset(const std::string& path, const Effect& effect, ParameterValue
         if (value.is_number() || value.is_boolean()) numbers.push_back(value.is_boolean() ? value.get<bool>() : value.get<double>());
         else if (value.is_array())
             for (const auto& item : value) {
-                if (!item.is_number()) throw Error(path + ": preset value of " + name + " holds a non-number");
+                if (!item.is_number()) throw Error(where(name) + "preset value of " + name + " holds a non-number");
                 numbers.push_back(item.get<double>());
             }
-        else throw Error(path + ": preset value of " + name + " must be a number or a list of numbers");
+        else throw Error(where(name) + "preset value of " + name + " must be a number or a list of numbers");
+        for (double number : numbers)
+            if (!std::isfinite(number)) throw Error(where(name) + "preset value of " + name + " is not a finite number");
         auto& target = updated.numbers[name];
         if (numbers.size() != target.size())
-            throw Error(path + ": preset gives " + std::to_string(numbers.size()) + " value(s) for " + parameter->type + " " +
+            throw Error(where(name) + "preset gives " + std::to_string(numbers.size()) + " value(s) for " + parameter->type + " " +
                         name + ", which takes " + std::to_string(target.size()));
         target = numbers;
     }

@@ -1,10 +1,16 @@
 #include "effect/source_map.hpp"
 
+#include <cctype>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <regex>
+#include <charconv>
+#include <optional>
+#include <string_view>
 #include <sstream>
+
+#include "core/text.hpp"
 
 namespace fxview::effect {
 
@@ -19,15 +25,62 @@ const char* stage_name(ShaderStage stage) {
     return "?";
 }
 
-SourceMap SourceMap::load(const std::string& path, const std::vector<std::string>& include_dirs) {
+namespace {
+
+// A plain scanner instead of std::regex: regex matching recurses per character and overflows the
+// stack on long lines (a line of 30 000 blanks was enough).
+size_t skip_blanks(std::string_view line, size_t i) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    return i;
+}
+
+// Whether only blanks or a `//` comment follow position i.
+bool only_comment_after(std::string_view line, size_t i) {
+    i = skip_blanks(line, i);
+    return i == line.size() || line.substr(i, 2) == "//";
+}
+
+// For a line "  #  word rest", the word and the position after it; an empty word otherwise.
+std::pair<std::string_view, size_t> directive(std::string_view line) {
+    size_t i = skip_blanks(line, 0);
+    if (i == line.size() || line[i] != '#') return {{}, 0};
+    i = skip_blanks(line, i + 1);
+    const size_t word = i;
+    while (i < line.size() && (std::isalnum(static_cast<unsigned char>(line[i])) || line[i] == '_')) ++i;
+    return {line.substr(word, i - word), i};
+}
+
+bool is_pragma_once(std::string_view line) {
+    const auto [word, after] = directive(line);
+    if (word != "pragma") return false;
+    const size_t i = skip_blanks(line, after);
+    return i > after && line.substr(i, 4) == "once" && (i + 4 == line.size() || !std::isalnum(static_cast<unsigned char>(line[i + 4]))) &&
+           only_comment_after(line, i + 4);
+}
+
+// The file name of `#include "name"` or `#include <name>`; nullopt for a malformed name.
+std::optional<std::string> include_name(std::string_view rest) {
+    const size_t open = skip_blanks(rest, 0);
+    if (open == rest.size() || (rest[open] != '"' && rest[open] != '<')) return std::nullopt;
+    const size_t close = rest.find_first_of("\">", open + 1);
+    if (close == std::string_view::npos || close == open + 1 || !only_comment_after(rest, close + 1)) return std::nullopt;
+    return std::string(rest.substr(open + 1, close - open - 1));
+}
+
+constexpr size_t kMaxIncludeName = 1024;
+
+}  // namespace
+
+SourceMap SourceMap::load(const std::string& path, const std::vector<std::string>& include_dirs, const ResourceLimits& limits,
+                          const FileAccessPolicy& access) {
     SourceMap map;
     std::vector<std::string> stack;
-    map.append_file(path, include_dirs, stack, nullptr);
+    map.append_file(path, {include_dirs, limits, access}, stack, nullptr);
     return map;
 }
 
-void SourceMap::append_file(const std::string& path, const std::vector<std::string>& include_dirs,
-                            std::vector<std::string>& stack, const SourceLocation* included_from) {
+void SourceMap::append_file(const std::string& path, const LoadContext& context, std::vector<std::string>& stack,
+                            const SourceLocation* included_from) {
     std::error_code error;
     const std::string canonical = fs::weakly_canonical(path, error).string();
     if (std::find(stack.begin(), stack.end(), canonical) != stack.end()) {
@@ -35,20 +88,34 @@ void SourceMap::append_file(const std::string& path, const std::vector<std::stri
         for (const auto& file : stack) chain += fs::path(file).filename().string() + " -> ";
         throw EffectError(*included_from, "include cycle: " + chain + fs::path(canonical).filename().string());
     }
+    if (included_from && static_cast<std::int64_t>(stack.size()) > context.limits.include_depth)
+        throw EffectError(*included_from, "#include nested deeper than " + std::to_string(context.limits.include_depth) +
+                                              " levels (budget include-depth; raise it with --limit include-depth=N)");
+    const SourceLocation whole_file{path, included_from ? 1 : 0};
+    if (!fs::is_regular_file(path, error)) {
+        if (included_from) throw EffectError(*included_from, "cannot open included file '" + excerpt(path, 200) + "'");
+        throw EffectError({path, 0}, "cannot open effect file");
+    }
+    const auto size = static_cast<std::int64_t>(fs::file_size(path, error));
+    if (!error && static_cast<std::int64_t>(text_.size()) + size > context.limits.source_bytes)
+        throw EffectError(included_from ? *included_from : whole_file,
+                          "the effect with its includes exceeds the budget source-bytes = " + std::to_string(context.limits.source_bytes) +
+                              " (raise it with --limit source-bytes=N)");
     std::ifstream file(path, std::ios::binary);
-    if (!file || fs::is_directory(path)) {
-        if (included_from) throw EffectError(*included_from, "cannot open included file '" + path + "'");
+    if (!file) {
+        if (included_from) throw EffectError(*included_from, "cannot open included file '" + excerpt(path, 200) + "'");
         throw EffectError({path, 0}, "cannot open effect file");
     }
     std::vector<std::string> lines;
     for (std::string line; std::getline(file, line);) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
-        lines.push_back(line);
+        if (line.find('\0') != std::string::npos)
+            throw EffectError({path, static_cast<int>(lines.size() + 1)}, "the line holds a NUL byte: this is not an effect source file");
+        lines.push_back(std::move(line));
     }
     // `#pragma once` is the include guard: such a file is expanded only the first time.
-    static const std::regex pragma_once(R"(^\s*#\s*pragma\s+once\s*(//.*)?$)");
     for (auto& line : lines)
-        if (std::regex_match(line, pragma_once)) {
+        if (is_pragma_once(line)) {
             if (!once_.insert(canonical).second) return;
             line.clear();
         }
@@ -59,35 +126,43 @@ void SourceMap::append_file(const std::string& path, const std::vector<std::stri
     }
     stack.push_back(canonical);
 
-    static const std::regex include_line(R"(^\s*#\s*include\b(.*)$)");
-    static const std::regex include_name(R"(^\s*[\"<]([^\">]+)[\">]\s*(//.*)?$)");
     int number = 0;
     for (std::string& line : lines) {
         ++number;
-        std::smatch match;
-        if (std::regex_match(line, match, include_line)) {
+        const auto [word, after] = directive(line);
+        if (word == "include") {
             const SourceLocation here{path, number};
-            std::smatch name;
-            const std::string rest = match[1].str();
-            if (!std::regex_match(rest, name, include_name))
-                throw EffectError(here, "#include needs a file name in quotes, got '" + rest + "'");
+            const std::string_view rest = std::string_view(line).substr(after);
+            const auto name = include_name(rest);
+            if (!name) throw EffectError(here, "#include needs a file name in quotes, got '" + excerpt(rest) + "'");
+            if (name->size() > kMaxIncludeName || name->find('\0') != std::string::npos)
+                throw EffectError(here, "#include names a file of " + std::to_string(name->size()) + " characters (at most " +
+                                            std::to_string(kMaxIncludeName) + ")");
             std::string found;
-            std::vector<fs::path> candidates{fs::path(path).parent_path() / name[1].str()};
-            for (const auto& dir : include_dirs) candidates.push_back(fs::path(dir) / name[1].str());
+            std::vector<fs::path> candidates{fs::path(path).parent_path() / *name};
+            for (const auto& dir : context.include_dirs) candidates.push_back(fs::path(dir) / *name);
             for (const auto& candidate : candidates)
-                if (fs::is_regular_file(candidate)) {
+                if (fs::is_regular_file(candidate, error)) {
                     found = candidate.lexically_normal().string();
                     break;
                 }
             if (found.empty()) {
                 std::string searched;
                 for (const auto& candidate : candidates) searched += (searched.empty() ? "" : ", ") + candidate.parent_path().string();
-                throw EffectError(here, "included file '" + name[1].str() + "' not found (searched " + searched + ")");
+                throw EffectError(here, "included file '" + excerpt(*name, 200) + "' not found (searched " + excerpt(searched, 400) + ")");
             }
-            append_file(found, include_dirs, stack, &here);
+            try {
+                context.access.require(found, "included file");
+            } catch (const Error& refused) {
+                throw EffectError(here, refused.what());
+            }
+            append_file(found, context, stack, &here);
             // Keep one line for the #include itself so that every line of the file has an origin.
             line.clear();
         }
+        if (text_.size() + line.size() + 1 > static_cast<size_t>(context.limits.source_bytes))
+            throw EffectError({path, number}, "the effect with its includes exceeds the budget source-bytes = " +
+                                                  std::to_string(context.limits.source_bytes) + " (raise it with --limit source-bytes=N)");
         line_starts_.push_back(text_.size());
         origins_.push_back({index, number});
         text_ += line;
@@ -145,20 +220,56 @@ bool SourceMap::has_file_prefix(const std::string& line) const {
                        [&](const std::string& file) { return line.rfind(file + ":", 0) == 0; });
 }
 
+namespace {
+
+// "digits" at position i: the number and the position after it.
+std::optional<std::pair<long long, size_t>> read_number(std::string_view line, size_t i) {
+    long long value = 0;
+    const auto [end, error] = std::from_chars(line.data() + i, line.data() + line.size(), value);
+    if (error != std::errc() || end == line.data() + i) return std::nullopt;
+    return std::make_pair(value, static_cast<size_t>(end - line.data()));
+}
+
+// Mesa: "0:12(3): error: ..."; NVIDIA: "0(12) : error ...". The encoded line and the message.
+std::optional<std::pair<long long, std::string_view>> driver_message(std::string_view line) {
+    const auto source = read_number(line, 0);
+    if (!source) return std::nullopt;
+    size_t i = source->second;
+    if (i < line.size() && line[i] == ':') {
+        const auto number = read_number(line, i + 1);
+        if (!number || number->second >= line.size() || line[number->second] != '(') return std::nullopt;
+        const auto column = read_number(line, number->second + 1);
+        if (!column || line.substr(column->second, 3) != "): ") return std::nullopt;
+        return std::make_pair(number->first, line.substr(column->second + 3));
+    }
+    if (i < line.size() && line[i] == '(') {
+        const auto number = read_number(line, i + 1);
+        if (!number || line.substr(number->second, 4) != ") : ") return std::nullopt;
+        return std::make_pair(number->first, line.substr(number->second + 4));
+    }
+    return std::nullopt;
+}
+
+// Driver messages quote source text; a hostile identifier must not make a megabyte message.
+constexpr size_t kMaxLogLine = 400;
+
+std::string clipped(std::string_view text) {
+    return text.size() <= kMaxLogLine ? std::string(text) : std::string(text.substr(0, kMaxLogLine)) + "...";
+}
+
+}  // namespace
+
 std::string SourceMap::map_compiler_log(const std::string& log) const {
-    static const std::regex mesa(R"(^(\d+):(\d+)\(\d+\): (.*)$)");
-    static const std::regex nvidia(R"(^(\d+)\((\d+)\) : (.*)$)");
     std::istringstream lines(log);
     std::string line, out;
     while (std::getline(lines, line)) {
-        std::smatch match;
-        if (std::regex_match(line, match, mesa) || std::regex_match(line, match, nvidia)) {
-            const long long encoded = std::stoll(match[2].str());
+        if (const auto message = driver_message(line)) {
+            const long long encoded = message->first;
             const auto index = static_cast<size_t>(encoded / kLinesPerFile);
-            const std::string file = index < files_.size() ? files_[index] : "<generated>";
-            out += file + ":" + std::to_string(encoded % kLinesPerFile) + ": " + match[3].str() + "\n";
+            const std::string file = encoded >= 0 && index < files_.size() ? files_[index] : "<generated>";
+            out += file + ":" + std::to_string(encoded % kLinesPerFile) + ": " + clipped(message->second) + "\n";
         } else if (!line.empty()) {
-            out += line + "\n";
+            out += clipped(line) + "\n";
         }
     }
     return out;

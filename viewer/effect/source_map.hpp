@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/file_access.hpp"
+#include "core/limits.hpp"
 
 namespace fxview::effect {
 
@@ -33,8 +35,10 @@ class SourceMap {
 public:
     // Reads `path` and expands `#include "file"` (searched relative to the including file, then in
     // each of `include_dirs`). A file with `#pragma once` is expanded once; a cycle is an error
-    // naming the chain.
-    static SourceMap load(const std::string& path, const std::vector<std::string>& include_dirs);
+    // naming the chain. Included files must be allowed by `access`; nesting deeper than
+    // limits.include_depth, or more than limits.source_bytes of text in all, is an error.
+    static SourceMap load(const std::string& path, const std::vector<std::string>& include_dirs, const ResourceLimits& limits,
+                          const FileAccessPolicy& access);
 
     const std::string& text() const { return text_; }
     SourceLocation locate(size_t offset) const;
@@ -54,8 +58,13 @@ private:
         int file;
         int line;
     };
-    void append_file(const std::string& path, const std::vector<std::string>& include_dirs,
-                     std::vector<std::string>& stack, const SourceLocation* included_from);
+    struct LoadContext {
+        const std::vector<std::string>& include_dirs;
+        const ResourceLimits& limits;
+        const FileAccessPolicy& access;
+    };
+    void append_file(const std::string& path, const LoadContext& context, std::vector<std::string>& stack,
+                     const SourceLocation* included_from);
     size_t line_index(size_t offset) const;
     int file_index(const std::string& name) const;
 

@@ -1,5 +1,6 @@
 // Annotations to UI hints, accepting NVIDIA (UIName, UIWidget, UIMin...), DXSAS (SasUiLabel,
 // SasUiControl, SasUiMin...) and Maya (lower case) spellings, all case-insensitive.
+#include <cmath>
 #include <algorithm>
 #include <cctype>
 #include <map>
@@ -68,7 +69,12 @@ UiHints ui_hints_from(const std::vector<Annotation>& annotations) {
             case Hint::Max: ui.max = number(); break;
             case Hint::Step: ui.step = number(); break;
             case Hint::Group: ui.group = text(); break;
-            case Hint::Order: ui.order = static_cast<int>(*number()); break;
+            case Hint::Order: {
+                const double order = *number();
+                if (!(std::abs(order) <= 1e6)) throw EffectError(annotation.where, "UIOrder must lie in -1e6..1e6");
+                ui.order = static_cast<int>(order);
+                break;
+            }
             case Hint::Unit: ui.unit = text(); break;
             case Hint::Help: ui.help = text(); break;
             case Hint::Items: ui.items = split_items(text()); break;

@@ -1,6 +1,7 @@
 #include "fit/brdf_grid.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include <tuple>
 
 #include "core/error.hpp"
+#include "core/text.hpp"
 
 namespace fxview::fit {
 namespace {
@@ -58,8 +60,10 @@ bool is_uniform_full_grid(const BrdfGrid& grid) {
     return uniform(grid.theta_in, 90.0) && uniform(grid.theta_out, 90.0) && uniform(grid.phi_out, 180.0);
 }
 
-BrdfGrid read_brdf_grid(const std::string& path) {
-    if (std::filesystem::is_directory(path)) throw Error(path + ": is a folder, not a BRDF grid file");
+BrdfGrid read_brdf_grid(const std::string& path, const ResourceLimits& limits) {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) throw Error(path + ": is a folder, not a BRDF grid file");
+    checked_file_size(path, limits);
     std::ifstream in(path);
     if (!in) throw Error(path + ": cannot open");
     using Key = std::tuple<double, double, double>;
@@ -83,10 +87,14 @@ BrdfGrid read_brdf_grid(const std::string& path) {
         int count = 0;
         while (std::getline(fields, field, ',')) {
             if (count == 6) throw Error(path + ":" + std::to_string(number) + ": more than 6 values");
-            char* end = nullptr;
-            v[static_cast<size_t>(count)] = std::strtod(field.c_str(), &end);
-            if (end == field.c_str() || !std::isfinite(v[static_cast<size_t>(count)]))
-                throw Error(path + ":" + std::to_string(number) + ": '" + field + "' is not a number");
+            // The whole field must be one number (blanks around it allowed): "0.25garbage" is an error.
+            const size_t first = field.find_first_not_of(" \t\r"), last = field.find_last_not_of(" \t\r");
+            const char* begin = field.data() + (first == std::string::npos ? field.size() : first);
+            const char* stop = field.data() + (last == std::string::npos ? field.size() : last + 1);
+            double& value = v[static_cast<size_t>(count)];
+            const auto [end, parse_error] = std::from_chars(begin, stop, value);
+            if (begin == stop || parse_error != std::errc() || end != stop || !std::isfinite(value))
+                throw Error(path + ":" + std::to_string(number) + ": '" + excerpt(field) + "' is not a finite number");
             ++count;
         }
         if (count != 6) throw Error(path + ":" + std::to_string(number) + ": expected 6 values, found " + std::to_string(count));

@@ -5,6 +5,7 @@
 //   theta_in_deg,theta_out_deg,phi_out_deg,r,g,b
 // one line per sample, any order, forming a complete grid; '#' lines are comments.
 #pragma once
+#include "core/limits.hpp"
 #include <array>
 #include <functional>
 #include <string>
@@ -32,7 +33,7 @@ BrdfGrid uniform_grid(int theta_in_count, int theta_out_count, int phi_out_count
 bool is_uniform_full_grid(const BrdfGrid& grid);
 
 // Reads / writes the CSV format above; read errors name the file and line (Error).
-BrdfGrid read_brdf_grid(const std::string& path);
+BrdfGrid read_brdf_grid(const std::string& path, const ResourceLimits& limits = {});
 void write_brdf_grid(const BrdfGrid& grid, const std::string& path, int significant_digits = 17);  // 17: exact doubles
 
 // The grid's directions filled with f(l, v) (e.g. an analytic model: synthetic "measurements").

@@ -7,6 +7,6 @@
 
 namespace fxview::fit {
 
-BrdfGrid read_measurement(const std::string& path);
+BrdfGrid read_measurement(const std::string& path, const ResourceLimits& limits = {});
 
 }  // namespace fxview::fit

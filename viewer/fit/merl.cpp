@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "core/error.hpp"
+#include "core/limits.hpp"
 
 namespace fxview::fit {
 namespace {
@@ -47,13 +48,16 @@ std::array<double, 3> MerlBrdf::lookup(const glm::dvec3& l, const glm::dvec3& v)
     return rgb;
 }
 
-MerlBrdf read_merl(const std::string& path) {
-    if (std::filesystem::is_directory(path)) throw Error(path + ": is a folder, not a MERL file");
+MerlBrdf read_merl(const std::string& path, const ResourceLimits& limits) {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) throw Error(path + ": is a folder, not a MERL file");
+    checked_file_size(path, limits);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(path + ": cannot open");
     std::int32_t dims[3] = {};
     in.read(reinterpret_cast<char*>(dims), sizeof dims);
-    if (!in || static_cast<std::int64_t>(dims[0]) * dims[1] * dims[2] != static_cast<std::int64_t>(kCount))
+    // Each dimension is checked on its own first: their product of three int32 overflows even int64.
+    if (!in || dims[0] != kMerlThetaH || dims[1] != kMerlThetaD || dims[2] != kMerlPhiD)
         throw Error(path + ": not a MERL BRDF (dimensions " + std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " +
                     std::to_string(dims[2]) + ", expected 90 x 90 x 180)");
     MerlBrdf merl;

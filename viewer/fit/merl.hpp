@@ -5,6 +5,7 @@
 // BRDFRead.cpp: nearest lower bin, channel scales 1/1500, 1.15/1500, 1.66/1500, φd folded by
 // reciprocity into [0°, 180°).
 #pragma once
+#include "core/limits.hpp"
 #include <array>
 #include <string>
 #include <vector>
@@ -25,7 +26,7 @@ constexpr int kMerlThetaH = 90, kMerlThetaD = 90, kMerlPhiD = 180;
 // Bin of a direction pair (both unit vectors in the +z hemisphere): θh, θd and φd indices.
 std::array<int, 3> merl_bins(const glm::dvec3& l, const glm::dvec3& v);
 
-MerlBrdf read_merl(const std::string& path);                   // Error naming the file on bad size/data
+MerlBrdf read_merl(const std::string& path, const ResourceLimits& limits = {});                   // Error naming the file on bad size/data
 void write_merl(const MerlBrdf& merl, const std::string& path);  // for tests and conversions
 
 // The MERL BRDF sampled at the directions of `grid` (e.g. thesis_grid()).

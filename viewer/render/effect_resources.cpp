@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "core/text.hpp"
 #include "gl/texture_upload.hpp"
 #include "spectral/library.hpp"
 #include "texture/texture_file.hpp"
@@ -18,27 +19,29 @@ using texture::TextureType;
 std::string resolve_texture_path(const std::string& file, const std::string& effect_path,
                                  const std::vector<std::string>& texture_dirs) {
     std::vector<fs::path> candidates;
+    if (file.size() > 1024) throw Error("texture file name of " + std::to_string(file.size()) + " characters (at most 1024)");
     if (fs::path(file).is_absolute()) candidates.push_back(file);
     else {
         candidates.push_back(fs::path(effect_path).parent_path() / file);
         for (const auto& dir : texture_dirs) candidates.push_back(fs::path(dir) / file);
     }
+    std::error_code error;
     for (const auto& candidate : candidates)
-        if (fs::is_regular_file(candidate)) return candidate.lexically_normal().string();
+        if (fs::is_regular_file(candidate, error)) return candidate.lexically_normal().string();
     std::string searched;
     for (const auto& candidate : candidates) searched += (searched.empty() ? "" : ", ") + candidate.parent_path().string();
-    throw Error("texture file '" + file + "' not found (searched " + searched + ")");
+    throw Error("texture file '" + excerpt(file, 200) + "' not found (searched " + excerpt(searched, 400) + ")");
 }
 
 namespace {
 
 // Loads a texture resource's file(s) into the shape its declaration asks for.
-TextureData load_resource(const effect::TextureResource& resource, const std::vector<std::string>& paths) {
+TextureData load_resource(const effect::TextureResource& resource, const std::vector<std::string>& paths, const ResourceLimits& limits) {
     if (resource.type == TextureType::Cube && paths.size() == 6) {
         TextureData cube;
         cube.type = TextureType::Cube;
         for (const auto& path : paths) {
-            TextureData face = texture::load_texture_file(path);
+            TextureData face = texture::load_texture_file(path, limits);
             if (face.width() != face.height()) throw Error(path + ": cube faces must be square");
             if (!cube.faces.empty() && (face.width() != cube.width() || face.format != cube.format))
                 throw Error(path + ": cube faces must share one size and format");
@@ -51,8 +54,8 @@ TextureData load_resource(const effect::TextureResource& resource, const std::ve
     if (paths.size() != 1)
         throw Error("texture " + resource.name + " names " + std::to_string(paths.size()) +
                     " files; only a cube map takes six");
-    if (resource.type == TextureType::Tex3D && is_measured_brdf_file(paths[0])) return load_measured_brdf_texture(paths[0]);
-    TextureData data = texture::load_texture_file(paths[0]);
+    if (resource.type == TextureType::Tex3D && is_measured_brdf_file(paths[0])) return load_measured_brdf_texture(paths[0], limits);
+    TextureData data = texture::load_texture_file(paths[0], limits);
     switch (resource.type) {
         case TextureType::Cube: return data.type == TextureType::Cube ? data : texture::split_cube_cross(data);
         case TextureType::Tex1D: return texture::as_1d(data);
@@ -124,6 +127,7 @@ const spectral::PackedTexture* EffectResources::generated(const std::string& tex
 EffectResources::EffectResources(const effect::Effect& effect, const effect::ParameterValues& values,
                                  const std::vector<std::string>& texture_dirs)
     : effect_(effect) {
+    std::int64_t total_bytes = 0;
     for (const auto& resource : effect.textures) {
         if (resource.render_target) continue;
         try {
@@ -134,14 +138,23 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
             std::vector<std::string> paths;
             // `--set Sampler=file` replaces the file of the sampler's own texture.
             const auto override_file = values.textures.find(resource.name);
+            std::error_code error;
             if (override_file != values.textures.end()) {
-                if (!fs::is_regular_file(override_file->second)) throw Error(override_file->second + ": no such texture file");
+                if (!fs::is_regular_file(override_file->second, error)) throw Error(excerpt(override_file->second, 200) + ": no such texture file");
                 paths.push_back(override_file->second);
             } else {
                 for (const auto& file : resource.files) paths.push_back(resolve_texture_path(file, effect.path, texture_dirs));
             }
-            TextureData data = load_resource(resource, paths);
+            for (const auto& path : paths) effect.access.require(path, "texture file");
+            TextureData data = load_resource(resource, paths, effect.limits);
             data = texture::convert(data, storage_format(resource.storage, data.format));
+            // The stored size (after conversion, e.g. 8-bit to float) counts against the effect's budget.
+            std::int64_t bytes = 0;
+            for (const auto& face : data.faces)
+                for (const auto& level : face) bytes += static_cast<std::int64_t>(level.bytes.size());
+            check_limit(effect.limits, "texture-bytes", bytes, data.source, "stored texture of");
+            total_bytes += bytes;
+            check_limit(effect.limits, "effect-texture-bytes", total_bytes, data.source, "textures of the effect, in all");
             GpuTexture gpu;
             gpu.texture = gl::upload_texture(data, {resource.srgb, true});
             gpu.type = data.type;

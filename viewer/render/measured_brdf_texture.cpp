@@ -2,6 +2,7 @@
 
 #include <cstring>
 #include <fstream>
+#include <sstream>
 
 #include "core/error.hpp"
 #include "core/text.hpp"
@@ -13,14 +14,19 @@ bool is_measured_brdf_file(const std::string& path) {
     const std::string extension = lower_extension(path);
     if (extension == ".binary") return true;
     if (extension != ".csv") return false;
-    std::ifstream in(path);
-    for (std::string line; std::getline(in, line);)
+    // The header is among the first lines: only the first 4 KiB are read.
+    std::ifstream in(path, std::ios::binary);
+    std::string head(4096, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<size_t>(in.gcount()));
+    std::istringstream lines(head);
+    for (std::string line; std::getline(lines, line);)
         if (!line.empty() && line[0] != '#') return line.rfind("theta_in_deg,theta_out_deg,phi_out_deg", 0) == 0;
     return false;
 }
 
-texture::TextureData load_measured_brdf_texture(const std::string& path) {
-    const fit::BrdfGrid grid = fit::read_measurement(path);
+texture::TextureData load_measured_brdf_texture(const std::string& path, const ResourceLimits& limits) {
+    const fit::BrdfGrid grid = fit::read_measurement(path, limits);
     if (!fit::is_uniform_full_grid(grid))
         throw Error(path + ": a BRDF texture needs a uniform grid over theta 0..90 and phi 0..180 degrees");
     texture::Level level;

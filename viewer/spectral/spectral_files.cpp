@@ -1,11 +1,13 @@
 #include "spectral/spectral_files.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/text.hpp"
 
 namespace fxview::spectral {
 namespace {
@@ -20,7 +22,7 @@ std::vector<std::string> words(const std::string& line) {
 bool to_double(std::string text, double& value) {
     if (!text.empty() && text.front() == '"' && text.back() == '"' && text.size() >= 2) text = text.substr(1, text.size() - 2);
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return !text.empty() && error == std::errc() && end == text.data() + text.size();
+    return !text.empty() && error == std::errc() && end == text.data() + text.size() && std::isfinite(value);
 }
 
 std::string unquote(std::string text) {
@@ -30,7 +32,8 @@ std::string unquote(std::string text) {
 
 }  // namespace
 
-std::vector<NamedSpectrum> read_cgats(const std::string& path, Extrapolation outside) {
+std::vector<NamedSpectrum> read_cgats(const std::string& path, Extrapolation outside, const ResourceLimits& limits) {
+    checked_file_size(path, limits);
     std::ifstream file(path);
     if (!file) throw Error(path + ": cannot open spectral file");
     std::string line, display = std::filesystem::path(path).stem().string();
@@ -47,9 +50,17 @@ std::vector<NamedSpectrum> read_cgats(const std::string& path, Extrapolation out
         if (w.empty() || w[0][0] == '#') continue;
         if (state == Header) {
             if (w[0] == "DISPLAY" && w.size() >= 2) display = unquote(line.substr(line.find(w[1])));
-            else if (w[0] == "SPECTRAL_START_NM" && w.size() >= 2) to_double(w[1], start_nm);
-            else if (w[0] == "SPECTRAL_END_NM" && w.size() >= 2) to_double(w[1], end_nm);
-            else if (w[0] == "SPECTRAL_BANDS" && w.size() >= 2) to_double(w[1], bands);
+            else if (w[0] == "SPECTRAL_START_NM" || w[0] == "SPECTRAL_END_NM" || w[0] == "SPECTRAL_BANDS") {
+                // Header numbers are checked where they stand: a wavelength in 0..100000 nm, a band
+                // count in 2..100000 (colord-data's files have 81 to 471).
+                double value = 0;
+                const bool bands_field = w[0] == "SPECTRAL_BANDS";
+                if (w.size() < 2 || !to_double(w[1], value) || value < (bands_field ? 2 : 0) || value > 100000 ||
+                    (bands_field && value != std::floor(value)))
+                    throw Error(path + ":" + std::to_string(number) + ": " + w[0] + " needs " +
+                                (bands_field ? "a whole number in 2..100000" : "a wavelength in 0..100000 nm"));
+                (w[0] == "SPECTRAL_START_NM" ? start_nm : w[0] == "SPECTRAL_END_NM" ? end_nm : bands) = value;
+            }
             else if (w[0] == "BEGIN_DATA_FORMAT") state = Format;
             else if (w[0] == "BEGIN_DATA") state = Data;
         } else if (state == Format) {
@@ -91,14 +102,19 @@ std::vector<NamedSpectrum> read_cgats(const std::string& path, Extrapolation out
         std::vector<std::pair<double, double>> points;
         for (const auto& [index, nm] : band_nm) {
             double v = 0;
-            if (!to_double(row[static_cast<size_t>(index)], v)) throw Error(where + "'" + row[static_cast<size_t>(index)] + "' is not a number");
+            if (!to_double(row[static_cast<size_t>(index)], v))
+                throw Error(where + "'" + excerpt(row[static_cast<size_t>(index)]) + "' is not a finite number");
             points.emplace_back(nm, v);
         }
         NamedSpectrum named;
         named.name = id_field >= 0 ? unquote(row[static_cast<size_t>(id_field)])
                      : rows.size() == 1 ? display
                                         : display + "-" + std::to_string(r);
-        named.spectrum = Spectrum::from_points(points, outside);
+        try {
+            named.spectrum = Spectrum::from_points(points, outside);
+        } catch (const Error& error) {
+            throw Error(where + error.what());
+        }
         named.source = path;
         spectra.push_back(std::move(named));
     }
@@ -124,7 +140,8 @@ void write_cgats(const std::string& path, const std::vector<NamedSpectrum>& spec
     file << "END_DATA\n";
 }
 
-NamedSpectrum read_csv(const std::string& path, Extrapolation outside) {
+NamedSpectrum read_csv(const std::string& path, Extrapolation outside, const ResourceLimits& limits) {
+    checked_file_size(path, limits);
     std::ifstream file(path);
     if (!file) throw Error(path + ": cannot open spectral file");
     std::vector<std::pair<double, double>> points;
@@ -149,7 +166,7 @@ NamedSpectrum read_csv(const std::string& path, Extrapolation outside) {
                 header_allowed = false;
                 continue;
             }
-            throw Error(path + ":" + std::to_string(number) + ": expected 'nm,value', got '" + line + "'");
+            throw Error(path + ":" + std::to_string(number) + ": expected 'nm,value' (finite numbers), got '" + excerpt(line) + "'");
         }
         header_allowed = false;
         if (!points.empty() && nm <= points.back().first)

@@ -9,6 +9,7 @@
 #include <iterator>
 
 #include "core/error.hpp"
+#include "core/limits.hpp"
 #include "texture/texture_file.hpp"
 
 namespace fxview::texture {
@@ -34,7 +35,7 @@ std::uint32_t word(const std::vector<std::uint8_t>& bytes, size_t offset) {
 
 }  // namespace
 
-TextureData load_dds(const std::string& path) {
+TextureData load_dds(const std::string& path, const ResourceLimits& limits) {
     std::ifstream file(path, std::ios::binary);
     if (!file) throw Error(path + ": cannot open DDS file");
     const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
@@ -47,11 +48,16 @@ TextureData load_dds(const std::string& path) {
     const std::uint32_t red_mask = word(bytes, 92);
     const std::uint32_t caps2 = word(bytes, 112);
     const int depth = (caps2 & kVolume) ? static_cast<int>(std::max<std::uint32_t>(1, word(bytes, 24))) : 1;
-    if (depth > 2048) throw Error(path + ": implausible DDS depth " + std::to_string(depth));
-    if (width < 1 || height < 1 || width > 16384 || height > 16384)
+    check_limit(limits, "texture-dimension", std::max({width, height, depth}), path, "DDS side");
+    if (width < 1 || height < 1 || depth < 1)
         throw Error(path + ": implausible DDS size " + std::to_string(width) + "x" + std::to_string(height));
-    if (mip_count > 15) throw Error(path + ": implausible DDS mip count " + std::to_string(mip_count));
-
+    // A full mip chain ends at 1x1: floor(log2(largest side)) + 1 levels. More cannot be uploaded.
+    std::uint32_t max_levels = 1;
+    for (int side = std::max({width, height, depth}); side > 1; side /= 2) ++max_levels;
+    if (mip_count > max_levels)
+        throw Error(path + ": DDS declares " + std::to_string(mip_count) + " mip levels, but a " + std::to_string(width) + "x" +
+                    std::to_string(height) + (depth > 1 ? "x" + std::to_string(depth) : std::string()) + " texture has at most " +
+                    std::to_string(max_levels));
     TextureData texture;
     texture.source = path;
     size_t offset = 128;
@@ -91,6 +97,13 @@ TextureData load_dds(const std::string& path) {
     } else {
         throw Error(path + ": unsupported DDS pixel format (flags 0x" + std::to_string(pf_flags) + ", " +
                     std::to_string(bit_count) + " bits)");
+    }
+    {  // the size the header claims, checked before any level is copied
+        std::int64_t total = 0;
+        for (int w = width, h = height, d = depth, m = 0; m < static_cast<int>(mip_count); ++m, w = std::max(1, w / 2),
+                 h = std::max(1, h / 2), d = std::max(1, d / 2))
+            total += static_cast<std::int64_t>(level_size(texture.format, w, h, d));
+        check_limit(limits, "texture-bytes", total * faces, path, "decoded DDS of");
     }
     texture.type = faces == 6 ? TextureType::Cube : (caps2 & kVolume) ? TextureType::Tex3D : TextureType::Tex2D;
     if (faces == 6 && width != height) throw Error(path + ": DDS cube faces must be square");

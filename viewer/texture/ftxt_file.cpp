@@ -6,11 +6,14 @@
 //   - too little data (or too much, or a malformed line) rejects the whole file, as in the original.
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/limits.hpp"
+#include "core/text.hpp"
 #include "texture/texture_file.hpp"
 
 namespace fxview::texture {
@@ -38,7 +41,8 @@ bool parse_float(const std::string& text, float& value) {
 
 }  // namespace
 
-TextureData load_ftxt(const std::string& path) {
+TextureData load_ftxt(const std::string& path, const ResourceLimits& limits) {
+    const long long file_bytes = checked_file_size(path, limits);
     std::ifstream file(path);
     if (!file) throw Error(path + ": cannot open FTXT file");
     std::string line;
@@ -57,13 +61,16 @@ TextureData load_ftxt(const std::string& path) {
             for (size_t i = 0; i < parts.size(); ++i) {
                 long long value = 0;
                 const auto [end, error] = std::from_chars(parts[i].data(), parts[i].data() + parts[i].size(), value);
-                if (error != std::errc() || end != parts[i].data() + parts[i].size() || value < 1 || value > 16384)
-                    throw Error(where() + "bad FTXT size '" + line + "' (each 1..16384)");
+                if (error != std::errc() || end != parts[i].data() + parts[i].size() || value < 1 || value > limits.texture_dimension)
+                    throw Error(where() + "bad FTXT size '" + excerpt(line) + "' (each 1.." + std::to_string(limits.texture_dimension) +
+                                ", budget texture-dimension)");
                 (i == 0 ? width : height) = value;
             }
             if (height == 0) height = 1;
             expected = width * height;
-            values.reserve(static_cast<size_t>(expected) * 4);
+            check_limit(limits, "texture-bytes", expected * 16, where().substr(0, where().size() - 2), "FTXT texture of");
+            // Reserve only what the file can hold (a texel line has at least 7 bytes), not what it claims.
+            values.reserve(static_cast<size_t>(std::min<long long>(expected, file_bytes / 7 + 1)) * 4);
             continue;
         }
         if (texels == expected)
@@ -72,7 +79,7 @@ TextureData load_ftxt(const std::string& path) {
         if (parts.size() != 4) throw Error(where() + "a texel line needs four values R;G;B;A, found " + std::to_string(parts.size()));
         for (const auto& part : parts) {
             float value = 0;
-            if (!parse_float(part, value)) throw Error(where() + "'" + part + "' is not a number");
+            if (!parse_float(part, value) || !std::isfinite(value)) throw Error(where() + "'" + excerpt(part) + "' is not a finite number");
             values.push_back(value);
         }
         ++texels;

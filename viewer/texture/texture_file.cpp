@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "core/error.hpp"
+#include "core/limits.hpp"
 
 namespace fxview::texture {
 namespace {
@@ -29,9 +30,20 @@ TextureData single_level(const std::string& path, PixelFormat format, int width,
 
 }  // namespace
 
-TextureData load_stb_image(const std::string& path) {
+// Checked from the file's header before anything is decoded: a small file may claim a huge image.
+static void check_image_size(const std::string& path, std::int64_t width, std::int64_t height, std::int64_t bytes_per_pixel,
+                      const ResourceLimits& limits) {
+    if (width < 1 || height < 1) throw Error(path + ": image has no pixels (" + std::to_string(width) + "x" + std::to_string(height) + ")");
+    check_limit(limits, "texture-dimension", std::max(width, height), path, "image side");
+    check_limit(limits, "texture-bytes", width * height * bytes_per_pixel, path, "decoded image of");
+}
+
+TextureData load_stb_image(const std::string& path, const ResourceLimits& limits) {
     int width = 0, height = 0, channels = 0;
-    if (lower_extension(path) == ".hdr") {
+    const bool hdr = lower_extension(path) == ".hdr";
+    if (!stbi_info(path.c_str(), &width, &height, &channels)) throw Error(path + ": cannot read image: " + stbi_failure_reason());
+    check_image_size(path, width, height, hdr ? 16 : 4, limits);
+    if (hdr) {
         std::unique_ptr<float, decltype(&stbi_image_free)> pixels(stbi_loadf(path.c_str(), &width, &height, &channels, 4),
                                                                   &stbi_image_free);
         if (!pixels) throw Error(path + ": cannot read image: " + stbi_failure_reason());
@@ -43,28 +55,40 @@ TextureData load_stb_image(const std::string& path) {
     return single_level(path, PixelFormat::RGBA8, width, height, pixels.get());
 }
 
-TextureData load_exr_texture(const std::string& path) {
-    float* rgba = nullptr;
-    int width = 0, height = 0;
+TextureData load_exr_texture(const std::string& path, const ResourceLimits& limits) {
+    EXRVersion version;
+    EXRHeader header;
+    InitEXRHeader(&header);
     const char* error = nullptr;
-    if (LoadEXR(&rgba, &width, &height, path.c_str(), &error) != TINYEXR_SUCCESS) {
+    const auto fail = [&](const char* what) {
         const std::string message = error ? error : "unknown error";
         if (error) FreeEXRErrorMessage(error);
-        throw Error(path + ": cannot read EXR: " + message);
-    }
+        throw Error(path + ": " + what + ": " + message);
+    };
+    if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS) fail("not an OpenEXR file");
+    if (ParseEXRHeaderFromFile(&header, &version, path.c_str(), &error) != TINYEXR_SUCCESS) fail("cannot read EXR header");
+    const std::int64_t width = static_cast<std::int64_t>(header.data_window.max_x) - header.data_window.min_x + 1;
+    const std::int64_t height = static_cast<std::int64_t>(header.data_window.max_y) - header.data_window.min_y + 1;
+    FreeEXRHeader(&header);
+    check_image_size(path, width, height, 16, limits);
+    float* rgba = nullptr;
+    int decoded_width = 0, decoded_height = 0;
+    if (LoadEXR(&rgba, &decoded_width, &decoded_height, path.c_str(), &error) != TINYEXR_SUCCESS) fail("cannot read EXR");
     std::unique_ptr<float, decltype(&std::free)> owner(rgba, &std::free);
-    return single_level(path, PixelFormat::RGBA32F, width, height, rgba);
+    return single_level(path, PixelFormat::RGBA32F, decoded_width, decoded_height, rgba);
 }
 
-TextureData load_texture_file(const std::string& path) {
-    if (!std::filesystem::is_regular_file(path)) throw Error(path + ": no such texture file");
+TextureData load_texture_file(const std::string& path, const ResourceLimits& limits) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) throw Error(path + ": no such texture file");
+    checked_file_size(path, limits);
     const std::string extension = lower_extension(path);
-    if (extension == ".dds") return load_dds(path);
-    if (extension == ".ftxt") return load_ftxt(path);
-    if (extension == ".exr") return load_exr_texture(path);
+    if (extension == ".dds") return load_dds(path, limits);
+    if (extension == ".ftxt") return load_ftxt(path, limits);
+    if (extension == ".exr") return load_exr_texture(path, limits);
     for (const char* known : {".png", ".jpg", ".jpeg", ".bmp", ".tga", ".hdr"})
-        if (extension == known) return load_stb_image(path);
-    throw Error(path + ": unsupported texture type '" + extension +
+        if (extension == known) return load_stb_image(path, limits);
+    throw Error(path + ": unsupported texture type '" + excerpt(extension) +
                 "' (expected .png, .jpg, .bmp, .tga, .hdr, .exr, .dds or .ftxt)");
 }
 

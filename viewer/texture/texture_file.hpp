@@ -6,16 +6,19 @@
 #pragma once
 #include <string>
 
+#include "core/limits.hpp"
 #include "texture/texture_data.hpp"
 
 namespace fxview::texture {
 
-TextureData load_texture_file(const std::string& path);
+// Sizes a file claims are checked against `limits` (data-file-bytes, texture-dimension,
+// texture-bytes) before anything is decoded or allocated.
+TextureData load_texture_file(const std::string& path, const ResourceLimits& limits = {});
 
-TextureData load_stb_image(const std::string& path);
-TextureData load_exr_texture(const std::string& path);
-TextureData load_dds(const std::string& path);
-TextureData load_ftxt(const std::string& path);
+TextureData load_stb_image(const std::string& path, const ResourceLimits& limits = {});
+TextureData load_exr_texture(const std::string& path, const ResourceLimits& limits = {});
+TextureData load_dds(const std::string& path, const ResourceLimits& limits = {});
+TextureData load_ftxt(const std::string& path, const ResourceLimits& limits = {});
 
 // One image holding a cube map as a cross: a vertical cross when taller than wide (3x4 faces,
 // -Z stored upside down), else a horizontal cross (4x3 faces). Faces must be equal squares.

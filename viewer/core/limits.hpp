@@ -1,0 +1,42 @@
+// Resource budgets: how much a file may make fxview read, decode or allocate. Files come from
+// strangers (effects travel like documents), so every size a file claims is checked against these
+// before anything is allocated. Defaults are documented in docs/effect-format.md ("Budgets");
+// `--limit NAME=VALUE` changes one.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fxview {
+
+struct ResourceLimits {
+    std::int64_t array_elements = 65536;            // elements of one uniform array
+    std::int64_t texture_dimension = 16384;         // pixels along any side (and slices of a volume)
+    std::int64_t texture_bytes = 128ll << 20;       // one texture, decoded (all faces and levels)
+    std::int64_t effect_texture_bytes = 384ll << 20;  // all textures of one effect, as stored
+    std::int64_t data_file_bytes = 128ll << 20;     // one data file: spectra, BRDF grids, MERL, OBJ, FTXT, presets
+    std::int64_t source_bytes = 16ll << 20;         // an effect with its includes expanded
+    std::int64_t include_depth = 32;                // nested #include levels
+};
+
+// One budget, as the user names it: "texture-bytes", "include-depth", ...
+struct LimitInfo {
+    const char* name;
+    std::int64_t ResourceLimits::*field;
+    const char* what;
+};
+const std::vector<LimitInfo>& limit_infos();
+
+// Applies "NAME=VALUE" (VALUE an integer, optionally with a K, M or G suffix for bytes);
+// throws UsageError naming the known budgets.
+void set_limit(ResourceLimits& limits, const std::string& assignment);
+
+// Throws Error "`where`: WHAT SIZE exceeds the budget NAME = LIMIT (--limit NAME=...)" when
+// `value` is above the limit named `name`.
+void check_limit(const ResourceLimits& limits, const char* name, std::int64_t value, const std::string& where,
+                 const std::string& what);
+
+// The size of a file, checked against data-file-bytes before it is read.
+std::int64_t checked_file_size(const std::string& path, const ResourceLimits& limits);
+
+}  // namespace fxview
