@@ -8,7 +8,9 @@ FXVIEW = $(BUILD_DIR)/bin/fxview
 MESHES = sphere torus cube plane disc knot
 VIEWS = normals uv camera light
 
-.PHONY: deps build run test clean
+FUZZ_SECONDS ?= 300
+
+.PHONY: deps build fuzz-build run test fuzz sanitize clean
 
 deps:
 	./scripts/install-deps.sh
@@ -48,8 +50,23 @@ run: build
 	$(FXVIEW) render effects/brdf/measured.fx --technique Measured --set Measured=out/gold-grid.csv --mesh knot --size 512x512 --out out/knot-measured.png
 	$(FXVIEW) render effects/brdf/measured.fx --technique Fitted --preset out/fit-gold.json --mesh knot --size 512x512 --out out/knot-fitted.png
 
-test: build
+# The sanitizer build of the fuzz harnesses (clang, ASan + UBSan) that the fuzz_replay test runs.
+fuzz-build: deps
+	./scripts/fuzz.sh build $(BUILD_DIR)/sanitize
+
+test: build fuzz-build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+# A fuzzing campaign: every harness for FUZZ_SECONDS (default 300) on the corpora; findings go to
+# $(BUILD_DIR)/sanitize/fuzz-crashes.
+fuzz: deps
+	./scripts/fuzz.sh campaign $(FUZZ_SECONDS) $(BUILD_DIR)/sanitize
+
+# The whole suite under AddressSanitizer + UndefinedBehaviorSanitizer (clang): a second full build.
+sanitize: deps fuzz-build
+	CC=clang CXX=clang++ cmake -S . -B $(BUILD_DIR)/asan-suite -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFXVIEW_SANITIZE=ON
+	cmake --build $(BUILD_DIR)/asan-suite -j $(JOBS)
+	cd $(BUILD_DIR)/asan-suite && ASAN_OPTIONS=detect_leaks=0 ctest --output-on-failure -j $(JOBS) -E fuzz_replay
 
 clean:
 	rm -rf $(BUILD_DIR) out

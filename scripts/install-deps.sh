@@ -9,6 +9,7 @@ packages=(
   libtinyobjloader-dev libtinyexr-dev nlohmann-json3-dev
   libegl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6 libosmesa6-dev
   libglx-mesa0 colord-data xvfb xauth
+  clang libclang-rt-14-dev
 )
 
 missing=()

@@ -25,6 +25,8 @@ public:
     // Loads the file again. Returns the error text on failure (the previous effect stays).
     std::optional<std::string> reload();
     bool files_changed() const;
+    // New include path, file-access policy or budgets for the next reload (e.g. a folder allowed).
+    void set_load_options(effect::LoadOptions options) { options_ = std::move(options); }
     std::optional<std::string> reload_if_changed() { return files_changed() ? reload() : std::nullopt; }
 
     const effect::Effect& effect() const { return *loaded_->effect; }

@@ -9,6 +9,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <vector>
 #include <memory>
 
 #include "core/error.hpp"
@@ -38,18 +42,42 @@ static void check_image_size(const std::string& path, std::int64_t width, std::i
     check_limit(limits, "texture-bytes", width * height * bytes_per_pixel, path, "decoded image of");
 }
 
+// stb_image trusts a PNG chunk's length and reserves it before reading (a 70-byte file asked for
+// 1.2 GB). Every chunk must fit in the file; then nothing stb reserves exceeds the file's size.
+static void check_png_chunks(const std::string& path, const std::vector<std::uint8_t>& bytes) {
+    static const std::uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (bytes.size() < 8 || !std::equal(signature, signature + 8, bytes.begin())) return;
+    for (size_t offset = 8; offset + 12 <= bytes.size();) {
+        const std::uint64_t length = std::uint64_t{bytes[offset]} << 24 | std::uint64_t{bytes[offset + 1]} << 16 |
+                                     std::uint64_t{bytes[offset + 2]} << 8 | bytes[offset + 3];
+        if (offset + 12 + length > bytes.size())
+            throw Error(path + ": PNG chunk at byte " + std::to_string(offset) + " claims " + std::to_string(length) +
+                        " bytes, more than the file holds");
+        if (std::equal(bytes.begin() + static_cast<std::ptrdiff_t>(offset + 4), bytes.begin() + static_cast<std::ptrdiff_t>(offset + 8), "IEND"))
+            return;
+        offset += 12 + length;
+    }
+}
+
 TextureData load_stb_image(const std::string& path, const ResourceLimits& limits) {
+    checked_file_size(path, limits);
+    std::ifstream file(path, std::ios::binary);
+    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    if (bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max())) throw Error(path + ": image file too large");
+    check_png_chunks(path, bytes);
+    const auto* data = bytes.data();
+    const int size = static_cast<int>(bytes.size());
     int width = 0, height = 0, channels = 0;
     const bool hdr = lower_extension(path) == ".hdr";
-    if (!stbi_info(path.c_str(), &width, &height, &channels)) throw Error(path + ": cannot read image: " + stbi_failure_reason());
+    if (!stbi_info_from_memory(data, size, &width, &height, &channels)) throw Error(path + ": cannot read image: " + stbi_failure_reason());
     check_image_size(path, width, height, hdr ? 16 : 4, limits);
     if (hdr) {
-        std::unique_ptr<float, decltype(&stbi_image_free)> pixels(stbi_loadf(path.c_str(), &width, &height, &channels, 4),
+        std::unique_ptr<float, decltype(&stbi_image_free)> pixels(stbi_loadf_from_memory(data, size, &width, &height, &channels, 4),
                                                                   &stbi_image_free);
         if (!pixels) throw Error(path + ": cannot read image: " + stbi_failure_reason());
         return single_level(path, PixelFormat::RGBA32F, width, height, pixels.get());
     }
-    std::unique_ptr<stbi_uc, decltype(&stbi_image_free)> pixels(stbi_load(path.c_str(), &width, &height, &channels, 4),
+    std::unique_ptr<stbi_uc, decltype(&stbi_image_free)> pixels(stbi_load_from_memory(data, size, &width, &height, &channels, 4),
                                                                 &stbi_image_free);
     if (!pixels) throw Error(path + ": cannot read image: " + stbi_failure_reason());
     return single_level(path, PixelFormat::RGBA8, width, height, pixels.get());
@@ -66,7 +94,10 @@ TextureData load_exr_texture(const std::string& path, const ResourceLimits& limi
         throw Error(path + ": " + what + ": " + message);
     };
     if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS) fail("not an OpenEXR file");
-    if (ParseEXRHeaderFromFile(&header, &version, path.c_str(), &error) != TINYEXR_SUCCESS) fail("cannot read EXR header");
+    if (ParseEXRHeaderFromFile(&header, &version, path.c_str(), &error) != TINYEXR_SUCCESS) {
+        FreeEXRHeader(&header);  // a header that failed half-way still owns what it read
+        fail("cannot read EXR header");
+    }
     const std::int64_t width = static_cast<std::int64_t>(header.data_window.max_x) - header.data_window.min_x + 1;
     const std::int64_t height = static_cast<std::int64_t>(header.data_window.max_y) - header.data_window.min_y + 1;
     FreeEXRHeader(&header);

@@ -31,6 +31,7 @@ app::CommandRunner add_view_command(CLI::App& app) {
         options.technique = request.effect.technique;
         options.sets = request.effect.sets;
         options.preset = request.effect.preset;
+        options.access = request.effect.access;
         options.scene = request.scene;
         const glm::ivec2 window = app::parse_size("--window", o->window);
         options.window_width = window.x;

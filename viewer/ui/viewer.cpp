@@ -147,8 +147,10 @@ public:
 private:
     void load_effect(const std::string& path, const std::string& technique, const std::vector<std::string>& sets,
                      const std::string& preset) {
+        requested_effect_path_ = path;
         try {
             app::EffectOptions effect_options;
+            effect_options.access = access_;
             effect_options.path = path;
             effect_options.technique = technique;
             effect_options.sets = sets;
@@ -162,6 +164,37 @@ private:
             }
         } catch (const std::exception& error) {
             reload_error_ = error.what();  // the last good effect (if any) stays
+        }
+    }
+
+    // Lets effects read below `folder` too (the viewer's counterpart of --allow-path) and loads the
+    // effect again with it: a running effect keeps the user's values, one refused at start opens now.
+    void allow_folder(const std::string& folder) {
+        app::AccessOptions widened = access_;
+        widened.allow_paths.push_back(folder);
+        effect::LoadOptions load_options = app::effect_load_options(widened);  // UsageError for a missing folder
+        access_ = std::move(widened);
+        if (session_) {
+            session_->set_load_options(std::move(load_options));
+            const auto error = session_->reload();
+            reload_error_ = error ? *error : "";
+        } else if (!requested_effect_path_.empty()) {
+            load_effect(requested_effect_path_, options_.technique, options_.sets, options_.preset);
+        }
+    }
+
+    void draw_file_access() {
+        if (!ImGui::CollapsingHeader("File access")) return;
+        ImGui::TextWrapped("Effects read includes, textures and data only from their own folder and these folders:");
+        for (const auto& folder : app::effect_load_options(access_).access.folders()) ImGui::BulletText("%s", folder.c_str());
+        ImGui::InputText("##allow", allow_input_, sizeof allow_input_);
+        ImGui::SameLine();
+        if (ImGui::Button("Allow folder")) {
+            try {
+                allow_folder(allow_input_);
+            } catch (const std::exception& error) {
+                status_ = error.what();
+            }
         }
     }
 
@@ -491,7 +524,10 @@ private:
                 }
             ImGui::EndPopup();
         }
-        if (!session_) return;
+        if (!session_) {
+            draw_file_access();
+            return;
+        }
         ImGui::SameLine();
         if (ImGui::Button("Reload")) {
             if (const auto error = session_->reload()) reload_error_ = *error;
@@ -528,6 +564,7 @@ private:
                 status_ = e.what();
             }
         }
+        draw_file_access();
         ImGui::Separator();
         draw_parameter_panel(*session_);
     }
@@ -793,6 +830,8 @@ private:
             const fit::FitResult& r = *fit_panel_.result;
             for (auto& o : objects_) o.technique = session_ ? session_->technique() : o.technique;
             std::cout << nlohmann::json{{"fit", {{"ns", r.ns}, {"cd", r.cd}, {"cs", r.cs}, {"error_rgb", r.error_rgb}}}}.dump() << std::endl;
+        } else if (a.verb == "allow-path") {
+            allow_folder(args[0]);
         } else if (a.verb == "frames") {
             wait_frames_ = std::max(0, std::stoi(args[0]));
         }
@@ -826,7 +865,9 @@ private:
     std::string requested_tab_;
     std::vector<std::string> browser_files_, pending_window_shots_;
     char path_input_[512] = "effects/debug.fx", preset_input_[512] = "preset.json", obj_input_[512] = "model.obj",
-         texture_input_[512] = "textures/checker.png", shot_input_[512] = "out/screenshot.png";
+         texture_input_[512] = "textures/checker.png", shot_input_[512] = "out/screenshot.png", allow_input_[512] = "";
+    app::AccessOptions access_ = options_.access;
+    std::string requested_effect_path_;  // the last effect asked for, even if it failed to load
     std::vector<ScriptAction> script_;
     size_t script_position_ = 0;
     int wait_frames_ = 0;

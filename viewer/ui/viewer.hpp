@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/effect_options.hpp"
 #include "render/debug_renderer.hpp"
 #include "render/effect_session.hpp"
 #include "scene/scene.hpp"
@@ -20,6 +21,7 @@ struct ViewerOptions {
     std::string technique;
     std::vector<std::string> sets;
     std::string preset;
+    app::AccessOptions access;  // --allow-path folders and --limit budgets for every effect opened
     scene::Scene scene;
     int window_width = 1280, window_height = 800;
     int render_width = 0, render_height = 0;  // 0: follow the render view's size
