@@ -47,7 +47,7 @@ void check_limit(const ResourceLimits& limits, const char* name, std::int64_t va
     const LimitInfo& info = find_limit(name);
     const std::int64_t limit = limits.*info.field;
     if (value > limit)
-        throw Error(where + ": " + what + " " + std::to_string(value) + " exceeds the budget " + info.name + " = " +
+        throw BudgetError(where + ": " + what + " " + std::to_string(value) + " exceeds the budget " + info.name + " = " +
                     std::to_string(limit) + " (raise it with --limit " + info.name + "=N)");
 }
 

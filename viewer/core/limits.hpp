@@ -7,13 +7,20 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
+
 namespace fxview {
+
+// A file asked for more than a budget allows (a kind of Error: exit 1, `file:line` message).
+struct BudgetError : Error {
+    using Error::Error;
+};
 
 struct ResourceLimits {
     std::int64_t array_elements = 65536;            // elements of one uniform array
     std::int64_t texture_dimension = 16384;         // pixels along any side (and slices of a volume)
     std::int64_t texture_bytes = 128ll << 20;       // one texture, decoded (all faces and levels)
-    std::int64_t effect_texture_bytes = 384ll << 20;  // all textures of one effect, as stored
+    std::int64_t effect_texture_bytes = 192ll << 20;  // all textures of one effect, as stored
     std::int64_t data_file_bytes = 128ll << 20;     // one data file: spectra, BRDF grids, MERL, OBJ, FTXT, presets
     std::int64_t source_bytes = 16ll << 20;         // an effect with its includes expanded
     std::int64_t include_depth = 32;                // nested #include levels
@@ -31,7 +38,7 @@ const std::vector<LimitInfo>& limit_infos();
 // throws UsageError naming the known budgets.
 void set_limit(ResourceLimits& limits, const std::string& assignment);
 
-// Throws Error "`where`: WHAT SIZE exceeds the budget NAME = LIMIT (--limit NAME=...)" when
+// Throws BudgetError "`where`: WHAT SIZE exceeds the budget NAME = LIMIT (--limit NAME=...)" when
 // `value` is above the limit named `name`.
 void check_limit(const ResourceLimits& limits, const char* name, std::int64_t value, const std::string& where,
                  const std::string& what);

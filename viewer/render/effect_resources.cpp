@@ -48,6 +48,10 @@ TextureData load_resource(const effect::TextureResource& resource, const std::ve
             cube.format = face.format;
             cube.source += (cube.source.empty() ? "" : ";") + path;
             cube.faces.push_back(std::move(face.faces[0]));
+            std::int64_t bytes = 0;  // checked face by face: six faces each within budget can still exceed it
+            for (const auto& levels : cube.faces)
+                for (const auto& level : levels) bytes += static_cast<std::int64_t>(level.bytes.size());
+            check_limit(limits, "texture-bytes", bytes, path, "cube map, with this face,");
         }
         return cube;
     }
@@ -146,15 +150,29 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
                 for (const auto& file : resource.files) paths.push_back(resolve_texture_path(file, effect.path, texture_dirs));
             }
             for (const auto& path : paths) effect.access.require(path, "texture file");
-            TextureData data = load_resource(resource, paths, effect.limits);
-            data = texture::convert(data, storage_format(resource.storage, data.format));
-            // The stored size (after conversion, e.g. 8-bit to float) counts against the effect's budget.
+            // A texture may use what is left of the effect's budget, so that a file too large for it
+            // is refused from its header, before it is decoded.
+            const std::int64_t left = effect.limits.effect_texture_bytes - total_bytes;
+            ResourceLimits limits = effect.limits;
+            limits.texture_bytes = std::min(limits.texture_bytes, left);
+            TextureData data;
+            try {
+                data = load_resource(resource, paths, limits);
+            } catch (const BudgetError& error) {
+                if (left >= effect.limits.texture_bytes) throw;
+                throw BudgetError(paths[0] + ": the effect's textures would exceed the budget effect-texture-bytes = " +
+                                  std::to_string(effect.limits.effect_texture_bytes) + " (" + std::to_string(total_bytes) +
+                                  " used by the textures before this one; raise it with --limit effect-texture-bytes=N)");
+            }
+            // The stored size (after conversion, e.g. 8-bit to float) counts too; checked before converting.
+            const texture::PixelFormat stored = storage_format(resource.storage, data.format);
             std::int64_t bytes = 0;
             for (const auto& face : data.faces)
-                for (const auto& level : face) bytes += static_cast<std::int64_t>(level.bytes.size());
+                for (const auto& level : face) bytes += static_cast<std::int64_t>(texture::level_size(stored, level.width, level.height, level.depth));
             check_limit(effect.limits, "texture-bytes", bytes, data.source, "stored texture of");
             total_bytes += bytes;
             check_limit(effect.limits, "effect-texture-bytes", total_bytes, data.source, "textures of the effect, in all");
+            if (stored != data.format) data = texture::convert(data, stored);  // no copy when nothing changes
             GpuTexture gpu;
             gpu.texture = gl::upload_texture(data, {resource.srgb, true});
             gpu.type = data.type;
