@@ -15,6 +15,7 @@ const std::vector<LimitInfo>& limit_infos() {
         {"effect-texture-bytes", &ResourceLimits::effect_texture_bytes, "bytes of all textures of an effect"},
         {"data-file-bytes", &ResourceLimits::data_file_bytes, "bytes of one data file"},
         {"source-bytes", &ResourceLimits::source_bytes, "bytes of an effect with its includes"},
+        {"compile-bytes", &ResourceLimits::compile_bytes, "bytes of GLSL compiled, over all passes"},
         {"include-depth", &ResourceLimits::include_depth, "nested #include levels"},
     };
     return infos;

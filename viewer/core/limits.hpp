@@ -22,7 +22,8 @@ struct ResourceLimits {
     std::int64_t texture_bytes = 128ll << 20;       // one texture, decoded (all faces and levels)
     std::int64_t effect_texture_bytes = 192ll << 20;  // all textures of one effect, as stored
     std::int64_t data_file_bytes = 128ll << 20;     // one data file: spectra, BRDF grids, MERL, OBJ, FTXT, presets
-    std::int64_t source_bytes = 16ll << 20;         // an effect with its includes expanded
+    std::int64_t source_bytes = 512ll << 10;        // an effect with its includes expanded
+    std::int64_t compile_bytes = 2ll << 20;         // GLSL handed to the driver, summed over every pass
     std::int64_t include_depth = 32;                // nested #include levels
 };
 

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "effect/lexer.hpp"
 #include "effect/semantics.hpp"
@@ -210,9 +212,9 @@ private:
         parameter.type = expect_identifier("a type after 'uniform'").text;
         const Token name = expect_identifier("a parameter name after '" + parameter.type + "'");
         parameter.name = name.text;
-        if (effect_.find_parameter(parameter.name))
-            fail(name, "parameter '" + parameter.name + "' declared twice (first at " +
-                           effect_.find_parameter(parameter.name)->where.str() + ")");
+        if (const auto first = parameter_index_.find(parameter.name); first != parameter_index_.end())
+            fail(name, "parameter '" + parameter.name + "' declared twice (first at " + effect_.parameters[first->second].where.str() + ")");
+        count_declaration(name, parameter_index_.size(), "parameters");
         if (accept('[')) {
             const Token size = next();
             if (size.kind != TokenKind::Number) fail(size, "expected an array size");
@@ -241,6 +243,7 @@ private:
         }
         expect(';', "after the declaration of " + parameter.name);
         parameter.ui = ui_hints_from(parameter.annotations);
+        parameter_index_.emplace(parameter.name, effect_.parameters.size());
         effect_.parameters.push_back(std::move(parameter));
     }
 
@@ -289,8 +292,10 @@ private:
     }
 
     void add_texture(TextureResource texture, const Token& name) {
-        if (const TextureResource* existing = effect_.find_texture(texture.name))
-            fail(name, "texture '" + texture.name + "' declared twice (first at " + existing->where.str() + ")");
+        if (const auto first = texture_index_.find(texture.name); first != texture_index_.end())
+            fail(name, "texture '" + texture.name + "' declared twice (first at " + effect_.textures[first->second].where.str() + ")");
+        count_declaration(name, texture_index_.size(), "textures");
+        texture_index_.emplace(texture.name, effect_.textures.size());
         effect_.textures.push_back(std::move(texture));
     }
 
@@ -338,7 +343,9 @@ private:
     void parse_shader_block() {
         next();  // GLSLShader
         const Token name = expect_identifier("a shader name");
-        if (effect_.find_shader(name.text)) fail(name, "shader '" + name.text + "' defined twice");
+        if (shader_index_.count(name.text)) fail(name, "shader '" + name.text + "' defined twice");
+        count_declaration(name, shader_index_.size(), "shader blocks");
+        shader_index_.emplace(name.text, effect_.shaders.size());
         const Token open = expect('{', "to open shader " + name.text);
         const Token close = skip_block(open, "shader " + name.text);
         effect_.shaders.push_back({name.text, effect_.sources.glsl(open.end, close.begin), at(name)});
@@ -350,7 +357,9 @@ private:
         const Token name = expect_identifier("a technique name");
         technique.name = name.text;
         technique.where = at(name);
-        if (effect_.find_technique(technique.name)) fail(name, "technique '" + technique.name + "' defined twice");
+        if (!technique_names_.insert(technique.name).second) fail(name, "technique '" + technique.name + "' defined twice");
+        if (technique_names_.size() > kMaxTechniques)
+            fail(name, "more than " + std::to_string(kMaxTechniques) + " techniques in one effect");
         technique.annotations = parse_annotations();
         const Token open = expect('{', "to open technique " + technique.name);
         while (!accept('}')) {
@@ -358,6 +367,7 @@ private:
             if (keyword.kind == TokenKind::End) fail(open, "unterminated technique " + technique.name + ": '{' is never closed");
             if (keyword.kind != TokenKind::Identifier || keyword.text != "pass")
                 fail(keyword, "expected 'pass' or '}' in technique " + technique.name + ", found '" + keyword.text + "'");
+            if (++pass_count_ > kMaxPasses) fail(keyword, "more than " + std::to_string(kMaxPasses) + " passes in one effect");
             technique.passes.push_back(parse_pass(technique));
         }
         if (technique.passes.empty()) fail(name, "technique " + technique.name + " has no pass");
@@ -459,16 +469,29 @@ private:
         if (effect_.techniques.empty())
             throw EffectError({effect_.path, 1}, "the effect defines no technique");
         for (const auto& [token, stage] : shader_uses_)
-            if (!effect_.find_shader(token.text)) fail(token, "unknown shader '" + token.text + "'");
+            if (!shader_index_.count(token.text)) fail(token, "unknown shader '" + token.text + "'");
         for (const auto& [token, name] : texture_uses_)
-            if (!effect_.find_texture(name)) fail(token, "unknown texture '" + name + "'");
+            if (!texture_index_.count(name)) fail(token, "unknown texture '" + name + "'");
         for (const auto& p : effect_.parameters)
-            if (is_sampler_type(p.type) && !p.texture.empty() && !effect_.find_texture(p.texture))
+            if (is_sampler_type(p.type) && !p.texture.empty() && !texture_index_.count(p.texture))
                 throw EffectError(p.where, "sampler " + p.name + " reads unknown texture '" + p.texture + "'");
+        // Every pass compiles the top-level GLSL with its shaders; drivers take seconds per megabyte.
+        std::int64_t compiled = 0;
+        for (const auto& technique : effect_.techniques)
+            for (const auto& pass : technique.passes) {
+                compiled += static_cast<std::int64_t>(effect_.globals.size()) * static_cast<std::int64_t>(pass.shaders.size());
+                for (const auto& [stage, name] : pass.shaders)
+                    compiled += static_cast<std::int64_t>(effect_.shaders[shader_index_.at(name)].code.size());
+                if (compiled > effect_.limits.compile_bytes)
+                    throw EffectError(pass.where, "technique " + technique.name + " brings the GLSL compiled for this effect to " +
+                                                      std::to_string(compiled) + " bytes, over the budget compile-bytes = " +
+                                                      std::to_string(effect_.limits.compile_bytes) + " (raise it with --limit compile-bytes=N)");
+            }
         for (const auto& technique : effect_.techniques)
             for (const auto& pass : technique.passes)
                 for (const auto& target : pass.states.render_targets) {
-                    const TextureResource* texture = effect_.find_texture(target);
+                    const auto found = texture_index_.find(target);
+                    const TextureResource* texture = found == texture_index_.end() ? nullptr : &effect_.textures[found->second];
                     if (target.empty()) throw EffectError(pass.where, "pass " + pass.name + " leaves a gap in its render targets");
                     if (!texture || !texture->render_target)
                         throw EffectError(pass.where, "pass " + pass.name + " renders into '" + target +
@@ -476,8 +499,19 @@ private:
                 }
     }
 
+    // Fixed caps far above any real effect: they keep checks and GLSL compiles of a hostile file short.
+    // Each pass is a GLSL program to compile: their number bounds how long `check` can take.
+    static constexpr size_t kMaxDeclarations = 4096, kMaxTechniques = 256, kMaxPasses = 256;
+    size_t pass_count_ = 0;
+    void count_declaration(const Token& name, size_t declared, const char* what) const {
+        if (declared >= kMaxDeclarations) fail(name, "more than " + std::to_string(kMaxDeclarations) + " " + what + " in one effect");
+    }
+
     Effect& effect_;
     Lexer lexer_;
+    // Names seen so far, for duplicate and reference checks that stay fast with many declarations.
+    std::unordered_map<std::string, size_t> parameter_index_, texture_index_, shader_index_;
+    std::unordered_set<std::string> technique_names_;
     std::vector<std::pair<Token, ShaderStage>> shader_uses_;
     std::vector<std::pair<Token, std::string>> texture_uses_;
 };

@@ -91,7 +91,7 @@ void SourceMap::append_file(const std::string& path, const LoadContext& context,
     if (included_from && static_cast<std::int64_t>(stack.size()) > context.limits.include_depth)
         throw EffectError(*included_from, "#include nested deeper than " + std::to_string(context.limits.include_depth) +
                                               " levels (budget include-depth; raise it with --limit include-depth=N)");
-    const SourceLocation whole_file{path, included_from ? 1 : 0};
+    const SourceLocation whole_file{path, 1};
     if (!fs::is_regular_file(path, error)) {
         if (included_from) throw EffectError(*included_from, "cannot open included file '" + excerpt(path, 200) + "'");
         throw EffectError({path, 0}, "cannot open effect file");
