@@ -105,7 +105,7 @@ TEST_CASE("every thin-film technique matches its CPU reference (exact ones: char
     // (total internal reflection in the stack).
     for (const auto& variant : std::vector<std::vector<std::string>>{
              {},
-             {"Thickness=900", "Variation=1500", "Incidence=1", "SubstrateKappa=2", "Layers=16", "Steps=5", "LightSpectrum=F11",
+             {"Thickness=900", "Variation=1500", "Incidence=1", "SubstrateKappa=2", "Layers=16", "Steps=3", "LightSpectrum=F11",
               "FilmIndex=2.4", "Observer=1", "OutputMode=1", "FilmDispersion=40000", "SecondDispersion=3000"},
              {"OuterIndex=1.6", "FilmIndex=1.2", "SecondIndex=1.4", "Layers=3", "Steps=7"}}) {
         request.effect.sets = variant;

@@ -189,7 +189,9 @@ TEST_CASE("debug.fx Normals renders exactly the built-in normal view") {
                                                                {"TexCoords", render::DebugView::TexCoords},
                                                                {"VectorToCamera", render::DebugView::ToCamera},
                                                                {"VectorToLight", render::DebugView::ToLight}};
-    for (const auto& [technique, view] : pairs) {
+    for (const auto& pair : pairs) {
+        const char* technique = pair.first;  // not a structured binding: clang 14 cannot capture those
+        const render::DebugView view = pair.second;
         CAPTURE(technique);
         gl::RenderTarget a({96, 64, 1, 0}), b({96, 64, 1, 0});
         render::DebugRenderer debug;

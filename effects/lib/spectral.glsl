@@ -20,7 +20,7 @@ uniform bool ByteCmf < string UIName = "8-bit CMF texture"; string UIGroup = "Co
                        string UIHelp = "Table 2: byte storage is faster on old GPUs and loses precision"; > = false;
 uniform int Lower < string UIName = "Lower wavelength"; int UIMin = 360; int UIMax = 830; string UIUnits = "nm";
                     string UIGroup = "Integration"; int UIOrder = 1; > = 360;
-uniform int Upper < string UIName = "Upper wavelength"; int UIMin = 360; int UIMax = 830; string UIUnits = "nm";
+uniform int Upper < string UIName = "Upper wavelength"; int UIMin = 360; int UIMax = 830; string UIUnits = "nm"; string UIAtLeast = "Lower";
                     string UIGroup = "Integration"; int UIOrder = 2; > = 830;
 uniform int Steps < string UIName = "Steps"; int UIMin = 1; int UIMax = 50; string UIUnits = "nm";
                     string UIGroup = "Integration"; int UIOrder = 3;

@@ -26,10 +26,12 @@ float refracted_cos(float n_i, float n_t, float cos_i) {
     float ratio = n_i / n_t;
     return sqrt(max(1.0 - ratio * ratio * (1.0 - cos_i * cos_i), 0.0));
 }
-// Code 14: (r∥, r⊥) for light in n_i at cos_i meeting n_t at cos_t.
+// Code 14: (r∥, r⊥) for light in n_i at cos_i meeting n_t at cos_t. Both denominators vanish only
+// at grazing incidence on equal indices, where there is no interface: r = 0 there (the limit as
+// n_t -> n_i), not 0/0.
 vec2 fresnel_combined(float cos_i, float cos_t, float n_i, float n_t) {
-    return vec2((n_t * cos_i - n_i * cos_t) / (n_t * cos_i + n_i * cos_t),
-                (n_i * cos_i - n_t * cos_t) / (n_i * cos_i + n_t * cos_t));
+    float p = n_t * cos_i + n_i * cos_t, s = n_i * cos_i + n_t * cos_t;
+    return vec2(p > 0.0 ? (n_t * cos_i - n_i * cos_t) / p : 0.0, s > 0.0 ? (n_i * cos_i - n_t * cos_t) / s : 0.0);
 }
 
 // ---- complex Fresnel coefficients for the exact models ----
@@ -39,9 +41,11 @@ vec2 refracted_cos_c(float n0, vec2 n, float cos0) {
     return c_sqrt(vec2(1.0, 0.0) - c_mul(ratio, ratio) * (1.0 - cos0 * cos0));
 }
 struct Amplitude { vec2 s; vec2 p; };
+// A vanishing denominator means grazing incidence on equal indices: no interface, r = 0.
 Amplitude fresnel_c(vec2 n_i, vec2 cos_i, vec2 n_t, vec2 cos_t) {
     vec2 a = c_mul(n_i, cos_i), b = c_mul(n_t, cos_t), c = c_mul(n_t, cos_i), d = c_mul(n_i, cos_t);
-    return Amplitude(c_div(a - b, a + b), c_div(c - d, c + d));
+    return Amplitude(dot(a + b, a + b) > 0.0 ? c_div(a - b, a + b) : vec2(0.0),
+                     dot(c + d, c + d) > 0.0 ? c_div(c - d, c + d) : vec2(0.0));
 }
 // One step of eq. 67 from the bottom up: the amplitude reflected by interface r above a layer of
 // phase thickness `phase` whose lower boundary reflects gamma.

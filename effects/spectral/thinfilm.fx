@@ -228,25 +228,45 @@ GLSLShader BumpFresnelExactFS {
 // Eq. 48/49 (Sun): a free film in the outer medium, R = 2r²(1 - cos δ)/(1 + r⁴ - 2r² cos δ), evaluated
 // as 4r² sin²(δ/2) / ((1 - r²)² + 4r² sin²(δ/2)): the same value without float cancellation near
 // grazing incidence, where r² -> 1 and cos δ -> 1 (the printed form loses everything there).
+// Past the critical angle of a film less dense than its surroundings the wave in the film decays
+// (cos θ1 = iκ) and tunnels through a thin film: frustrated total reflection. Airy's sum with
+// complex amplitudes then has |r| = 1, r² = exp(2iφ) and exp(2iδ) = e real, which gives
+// R = (1 - e)² / ((1 - e)² + 4e sin²φ). Both cases are exact for the lossless free film.
 GLSLShader BubbleFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
-        float cos1 = refracted_cos(OuterIndex, FilmIndex, f.cos0);
-        vec2 r = fresnel_combined(f.cos0, cos1, OuterIndex, FilmIndex);
-        vec2 r2 = r * r;
-        vec2 one_minus_r2_squared = (1.0 - r2) * (1.0 - r2);
-        float half_path = 0.5 * kTwoPi * 2.0 * FilmIndex * f.thickness * cos1;
+        float ratio = OuterIndex / FilmIndex;
+        float sin2_film = ratio * ratio * (1.0 - f.cos0 * f.cos0);
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
-        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
-            float s = sin(half_path / float(nm));
-            vec2 numerator = 4.0 * r2 * s * s, denominator = one_minus_r2_squared + numerator;
-            // r² = 1 and sin = 0 together only at grazing incidence, where everything is reflected.
-            vec2 reflectance = mix(vec2(1.0), numerator / denominator, greaterThan(denominator, vec2(0.0)));
-            add_sample(xyz, ybar_sum, nm, 0.5 * (reflectance.x + reflectance.y));
+        if (sin2_film <= 1.0) {
+            float cos1 = sqrt(1.0 - sin2_film);
+            vec2 r = fresnel_combined(f.cos0, cos1, OuterIndex, FilmIndex);
+            vec2 r2 = r * r;
+            vec2 one_minus_r2_squared = (1.0 - r2) * (1.0 - r2);
+            float half_path = 0.5 * kTwoPi * 2.0 * FilmIndex * f.thickness * cos1;
+            for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+                float s = sin(half_path / float(nm));
+                vec2 numerator = 4.0 * r2 * s * s, denominator = one_minus_r2_squared + numerator;
+                // r² = 1 and sin = 0 together only at grazing incidence, where everything is reflected.
+                vec2 reflectance = mix(vec2(1.0), numerator / denominator, greaterThan(denominator, vec2(0.0)));
+                add_sample(xyz, ybar_sum, nm, 0.5 * (reflectance.x + reflectance.y));
+            }
+        } else {
+            float kappa = sqrt(sin2_film - 1.0);
+            Amplitude r = fresnel_c(vec2(OuterIndex, 0.0), vec2(f.cos0, 0.0), vec2(FilmIndex, 0.0), vec2(0.0, kappa));
+            // sin²φ = (1 - Re r²) / 2 for |r| = 1, per polarisation.
+            vec2 sin2_phi = 0.5 * (1.0 - vec2(c_mul(r.s, r.s).x, c_mul(r.p, r.p).x));
+            float decay = 2.0 * kTwoPi * FilmIndex * f.thickness * kappa;  // -ln e times the wavelength
+            for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+                float e = exp(-decay / float(nm));
+                vec2 numerator = vec2((1.0 - e) * (1.0 - e)), denominator = numerator + 4.0 * e * sin2_phi;
+                vec2 reflectance = mix(vec2(1.0), numerator / denominator, greaterThan(denominator, vec2(0.0)));
+                add_sample(xyz, ybar_sum, nm, 0.5 * (reflectance.x + reflectance.y));
+            }
         }
         color = film_colour(xyz, ybar_sum);
         fx_capture();
@@ -263,13 +283,15 @@ GLSLShader FabryPerotFS {
         float cos1 = refracted_cos(OuterIndex, FilmIndex, f.cos0);
         vec2 r = abs(fresnel_combined(f.cos0, cos1, OuterIndex, FilmIndex));
         float mirror = 0.5 * (r.x + r.y);
-        float finesse = 4.0 * mirror / ((1.0 - mirror) * (1.0 - mirror));
         float half_path = 0.5 * kTwoPi * 2.0 * FilmIndex * f.thickness * cos1;
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
         for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
             float s = sin(half_path / float(nm));
-            add_sample(xyz, ybar_sum, nm, cos1 > 0.0 ? 1.0 - 1.0 / (1.0 + finesse * s * s) : 1.0);
+            // 1 - 1/(1 + F s²) with F = 4R/(1 - R)², as 4R s² / ((1 - R)² + 4R s²): no infinite finesse
+            // at grazing incidence (R = 1); a film of no thickness (s = 0) there reflects nothing.
+            float numerator = 4.0 * mirror * s * s, denominator = (1.0 - mirror) * (1.0 - mirror) + numerator;
+            add_sample(xyz, ybar_sum, nm, cos1 > 0.0 ? (denominator > 0.0 ? numerator / denominator : 0.0) : 1.0);
         }
         color = film_colour(xyz, ybar_sum);
         fx_capture();
@@ -282,11 +304,20 @@ vec2 layer_index(int j) { return vec2(j % 2 == 1 ? FilmIndex : SecondIndex, 0.0)
 vec2 layer_index_at(int j, float nm) { return layer_index(j) + vec2((j % 2 == 1 ? FilmDispersion : SecondDispersion) / (nm * nm), 0.0); }
 float layer_thickness(int j, float thickness_a) { return j % 2 == 1 ? thickness_a : SecondThickness; }
 
+// Grazing incidence (cos θ0 = 0, silhouettes): a stack with any interface reflects everything (the
+// limit of Airy's and Hirayama's sums, which evaluate 0/0 there when a layer matches the outer
+// medium); a stack matched to the outer medium throughout has no interface and reflects nothing.
+float grazing_reflectance(vec2 na, vec2 nb, vec2 substrate, int count) {
+    vec2 n0 = vec2(OuterIndex, 0.0);
+    return na == n0 && (count == 1 || nb == n0) && substrate == n0 ? 0.0 : 1.0;
+}
+
 // Eq. 67 as the thesis ran it: every layer's angle and coefficients recomputed for each wavelength,
 // which also lets the indices follow the wavelength (Cauchy dispersion).
 float multilayer(float cos0, float thickness_a, float nm) {
     int count = clamp(Layers, 1, 16);
     vec2 substrate = vec2(SubstrateIndex, SubstrateKappa);
+    if (cos0 <= 0.0) return grazing_reflectance(layer_index_at(1, nm), layer_index_at(2, nm), substrate, count);
     vec2 n_last = layer_index_at(count, nm), cos_last = refracted_cos_c(OuterIndex, n_last, cos0);
     Amplitude gamma = fresnel_c(n_last, cos_last, substrate, refracted_cos_c(OuterIndex, substrate, cos0));
     for (int j = count; j >= 1; --j) {
@@ -336,6 +367,10 @@ GLSLShader MultiLayerFasterFS {
         for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
             float inverse_nm = 1.0 / float(nm);
             Amplitude gamma = bottom;
+            if (f.cos0 <= 0.0) {
+                add_sample(xyz, ybar_sum, nm, grazing_reflectance(na, nb, ns, count));
+                continue;
+            }
             for (int j = count; j >= 1; --j) {
                 Amplitude r = j == 1 ? top : (j % 2 == 1 ? b_to_a : a_to_b);
                 vec2 phase = (j % 2 == 1 ? path_a : path_b) * inverse_nm;

@@ -75,6 +75,7 @@ std::unique_ptr<render::EffectSession> open_effect_session(const EffectOptions& 
         if (options.technique.empty() && !preset.technique.empty()) session->select_technique(preset.technique);
     }
     for (const auto& assignment : options.sets) effect::set_value_from_text(session->effect(), session->values(), assignment);
+    effect::check_constraints(session->effect(), session->values());
     if (!session->values().textures.empty()) session->reload_textures();
     return session;
 }

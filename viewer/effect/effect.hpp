@@ -40,6 +40,7 @@ struct UiHints {
     std::string unit;
     std::string help;
     std::vector<std::string> items;  // combo entries ("a|b|c" or "a,b,c")
+    std::string at_least;            // UIAtLeast: a scalar parameter this one may not fall below
 };
 
 // How a sampler reads its texture (from annotations or a CgFX sampler_state block).

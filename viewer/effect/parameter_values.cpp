@@ -77,4 +77,32 @@ void set_value_from_text(const Effect& effect, ParameterValues& values, const st
     target = parsed;
 }
 
+void check_constraints(const Effect& effect, const ParameterValues& values) {
+    for (const auto& p : effect.parameters) {
+        if (p.ui.at_least.empty()) continue;
+        const double value = values.numbers.at(p.name)[0], floor = values.numbers.at(p.ui.at_least)[0];
+        if (value < floor) {
+            const auto text = [](double v) {
+                std::string s = std::to_string(v);
+                s.erase(s.find_last_not_of('0') + 1);
+                if (!s.empty() && s.back() == '.') s.pop_back();
+                return s;
+            };
+            throw UsageError(p.name + " = " + text(value) + " lies below " + p.ui.at_least + " = " + text(floor) + ": " + p.name +
+                             " must be at least " + p.ui.at_least + " (an empty range)");
+        }
+    }
+}
+
+void enforce_constraints(const Effect& effect, ParameterValues& values, const std::string& changed) {
+    for (const auto& p : effect.parameters) {
+        if (p.ui.at_least.empty()) continue;
+        double& value = values.numbers.at(p.name)[0];
+        double& floor = values.numbers.at(p.ui.at_least)[0];
+        if (value >= floor) continue;
+        if (changed == p.ui.at_least) floor = value;  // the user moved the lower one up: it stops at the upper
+        else value = floor;
+    }
+}
+
 }  // namespace fxview::effect

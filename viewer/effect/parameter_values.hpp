@@ -20,4 +20,10 @@ ParameterValues default_values(const Effect& effect);  // zeros where the file g
 // true/false, a combo entry by name (its index), or a file path for a sampler. Throws UsageError naming the parameter for an unknown name or a malformed value.
 void set_value_from_text(const Effect& effect, ParameterValues& values, const std::string& assignment);
 
+// Order constraints between parameters (UIAtLeast, e.g. Upper >= Lower for a wavelength range):
+// check_constraints throws UsageError naming both values; enforce_constraints moves the other
+// value to meet the one the user just changed (`changed`), as the viewer's sliders do.
+void check_constraints(const Effect& effect, const ParameterValues& values);
+void enforce_constraints(const Effect& effect, ParameterValues& values, const std::string& changed);
+
 }  // namespace fxview::effect

@@ -473,6 +473,14 @@ private:
         for (const auto& [token, name] : texture_uses_)
             if (!texture_index_.count(name)) fail(token, "unknown texture '" + name + "'");
         for (const auto& p : effect_.parameters)
+            if (!p.ui.at_least.empty()) {
+                const auto other = parameter_index_.find(p.ui.at_least);
+                if (other == parameter_index_.end() || component_count(effect_.parameters[other->second].type) != 1 ||
+                    component_count(p.type) != 1 || p.array_size > 0)
+                    throw EffectError(p.where, "UIAtLeast of " + p.name + " must name another scalar parameter, not '" +
+                                                   excerpt(p.ui.at_least) + "'");
+            }
+        for (const auto& p : effect_.parameters)
             if (is_sampler_type(p.type) && !p.texture.empty() && !texture_index_.count(p.texture))
                 throw EffectError(p.where, "sampler " + p.name + " reads unknown texture '" + p.texture + "'");
         // Every pass compiles the top-level GLSL with its shaders; drivers take seconds per megabyte.

@@ -80,6 +80,11 @@ Preset load_preset(const std::string& path, const Effect& effect, ParameterValue
                         name + ", which takes " + std::to_string(target.size()));
         target = numbers;
     }
+    try {
+        check_constraints(effect, updated);
+    } catch (const UsageError& error) {
+        throw Error(path + ":1: " + error.what());
+    }
     values = std::move(updated);
     preset.values = values;
     return preset;

@@ -11,7 +11,7 @@
 namespace fxview::effect {
 namespace {
 
-enum class Hint { Label, Widget, Min, Max, Step, Group, Order, Unit, Help, Items };
+enum class Hint { Label, Widget, Min, Max, Step, Group, Order, Unit, Help, Items, AtLeast };
 
 const std::map<std::string, Hint>& hint_names() {
     static const std::map<std::string, Hint> names = {
@@ -26,7 +26,7 @@ const std::map<std::string, Hint>& hint_names() {
         {"unit", Hint::Unit},         {"units", Hint::Unit},            {"uihelp", Hint::Help},
         {"sasuidescription", Hint::Help}, {"uidescription", Hint::Help}, {"help", Hint::Help},
         {"description", Hint::Help},  {"uiitems", Hint::Items},         {"uilist", Hint::Items},
-        {"items", Hint::Items},       {"enum", Hint::Items}};
+        {"items", Hint::Items},       {"enum", Hint::Items},            {"uiatleast", Hint::AtLeast}};
     return names;
 }
 
@@ -78,6 +78,7 @@ UiHints ui_hints_from(const std::vector<Annotation>& annotations) {
             case Hint::Unit: ui.unit = text(); break;
             case Hint::Help: ui.help = text(); break;
             case Hint::Items: ui.items = split_items(text()); break;
+            case Hint::AtLeast: ui.at_least = text(); break;
         }
     }
     if (ui.min && ui.max && *ui.min > *ui.max) {

@@ -13,11 +13,11 @@ Complex refracted_cos(Complex n_i, Complex n_t, Complex cos_i) {
 }
 
 Amplitudes fresnel(Complex n_i, Complex n_t, Complex cos_i, Complex cos_t, Polarisation polarisation) {
-    if (polarisation == Polarisation::S) {
-        const Complex denominator = n_i * cos_i + n_t * cos_t;
-        return {(n_i * cos_i - n_t * cos_t) / denominator, 2.0 * n_i * cos_i / denominator};
-    }
-    const Complex denominator = n_t * cos_i + n_i * cos_t;
+    const Complex denominator = polarisation == Polarisation::S ? n_i * cos_i + n_t * cos_t : n_t * cos_i + n_i * cos_t;
+    // Both terms vanish only at grazing incidence on equal indices: there is no interface, so r = 0
+    // and t = 1 (the limit as n_t -> n_i), not 0/0.
+    if (denominator == Complex(0.0)) return {0.0, 1.0};
+    if (polarisation == Polarisation::S) return {(n_i * cos_i - n_t * cos_t) / denominator, 2.0 * n_i * cos_i / denominator};
     return {(n_t * cos_i - n_i * cos_t) / denominator, 2.0 * n_i * cos_i / denominator};
 }
 

@@ -73,10 +73,12 @@ double fabry_perot(double n0, double n1, double thickness_nm, double wavelength_
     if (cos1 <= 0.0) return 1.0;
     const double r = 0.5 * (std::abs(coefficient(n0, n1, cos0, cos1, Polarisation::P)) +
                             std::abs(coefficient(n0, n1, cos0, cos1, Polarisation::S)));
-    const double finesse = 4.0 * r / ((1.0 - r) * (1.0 - r));
     const double half_delta = 0.5 * kTwoPi / wavelength_nm * 2.0 * n1 * thickness_nm * cos1;
     const double s = std::sin(half_delta);
-    return 1.0 - 1.0 / (1.0 + finesse * s * s);
+    // 1 - 1/(1 + F s²), F = 4R/(1 - R)², written without F: at grazing incidence R = 1 and F is
+    // infinite; a film of no thickness (s = 0) reflects nothing there (the limit along d = 0).
+    const double numerator = 4.0 * r * s * s, denominator = (1.0 - r) * (1.0 - r) + numerator;
+    return denominator > 0.0 ? numerator / denominator : 0.0;
 }
 
 }  // namespace fxview::optics::thesis

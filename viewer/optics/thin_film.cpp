@@ -21,9 +21,14 @@ double phase_factor(double wavelength_nm) { return 2.0 * std::numbers::pi / wave
 }  // namespace
 
 Response transfer_matrix(const Stack& stack, double wavelength_nm, double cos_outer, Polarisation polarisation) {
-    // Grazing incidence reflects everything (r -> -1 in both polarisations); the p admittance n / cos
-    // would divide by zero there.
-    if (cos_outer <= 0.0) return {1.0, 0.0};
+    // Grazing incidence reflects everything (r -> -1 in both polarisations) as soon as the stack has
+    // any interface; an index-matched stack has none and transmits everything. The p admittance
+    // n / cos would divide by zero there.
+    if (cos_outer <= 0.0) {
+        bool matched = stack.substrate == Complex(stack.outer);
+        for (const Layer& layer : stack.layers) matched = matched && layer.index == Complex(stack.outer);
+        return matched ? Response{0.0, 1.0} : Response{1.0, 0.0};
+    }
     const Complex eta0 = admittance(stack.outer, cos_outer, polarisation);
     Matrix product{1.0, 0.0, 0.0, 1.0};
     for (const Layer& layer : stack.layers) {

@@ -82,11 +82,32 @@ std::array<double, 4> film_colour(const Film& f, const ReferenceContext& c, cons
     return to_rgba(integrate(s, false, [&](int nm) { return spectral::packed_value(*s.spectra, light, nm) * reflectance(f, nm); }), s.mapping);
 }
 
+// The phase's float rounding is independent from wavelength to wavelength, so the colour error
+// averages over the samples. A light that puts its power into few wavelengths (a fluorescent line
+// spectrum, summed at its 5 nm lines) averages over fewer: the bound grows with the square root of
+// the drop in the effective number of samples (Σw)²/Σw², w = light x CMF, against an equal-energy light.
+double averaging_factor(const ReferenceContext& c) {
+    const SpectralSetup s = spectral_setup(c);
+    const int light = static_cast<int>(c.number("LightSpectrum"));
+    const auto effective_samples = [&](bool flat) {
+        double sum = 0, squares = 0;
+        for (int nm = s.lower; nm <= s.upper; nm += s.steps) {
+            const spectral::Vec3 cmf = spectral::cmf_value(*s.cmf, s.observer, nm);
+            const double w = (flat ? 1.0 : spectral::packed_value(*s.spectra, light, nm)) * (cmf[0] + cmf[1] + cmf[2]);
+            sum += w;
+            squares += w * w;
+        }
+        return squares > 0 ? sum * sum / squares : 1.0;
+    };
+    return std::max(1.0, std::sqrt(effective_samples(true) / effective_samples(false)));
+}
+
 Reference make(Reflectance reflectance, double tolerance, std::string why) {
     Reference r;
     r.shade = [reflectance](const ShadingInput& in, const ReferenceContext& c) { return film_colour(film(in, c), c, reflectance); };
     r.tolerance = tolerance;
-    r.why = std::move(why);
+    r.tolerance_for = [tolerance](const ReferenceContext& c) { return tolerance * averaging_factor(c); };
+    r.why = std::move(why) + "; scaled by sqrt(effective samples of an equal-energy light / of the light), 1 for smooth lights";
     return r;
 }
 

@@ -108,8 +108,8 @@ SpectralLibrary load_library(const std::string& path, const std::string& colord_
         const std::string name = trim(line.substr(0, equals)), rhs = trim(line.substr(equals + 1));
         const size_t space = rhs.find_first_of(" \t");
         const std::string kind = rhs.substr(0, space), source = space == std::string::npos ? "" : trim(rhs.substr(space));
-        if (name.empty() || source.empty() || (kind != "emission" && kind != "reflectance"))
-            throw Error(where + "expected 'NAME = emission|reflectance SOURCE'");
+        if (name.empty() || source.empty() || (kind != "emission" && kind != "lines" && kind != "reflectance"))
+            throw Error(where + "expected 'NAME = emission|lines|reflectance SOURCE'");
         if (library.index_of(name) >= 0) throw Error(where + "spectrum '" + name + "' listed twice");
         LibraryEntry entry;
         try {
@@ -119,10 +119,19 @@ SpectralLibrary load_library(const std::string& path, const std::string& colord_
         }
         entry.named.name = name;
         entry.kind = kind;
-        if (kind == "emission") {
+        if (kind == "emission" || kind == "lines") {
+            // Normalised by the peak of the interpolated data, so that a line spectrum's comb carries
+            // the same total power as the same data read as a smooth emission spectrum.
             double peak = 0;
             for (int nm = 360; nm <= 830; ++nm) peak = std::max(peak, entry.named.spectrum[nm]);
             if (peak <= 0) throw Error(where + "emission spectrum '" + name + "' is zero in 360-830 nm");
+            if (kind == "lines") {
+                try {
+                    entry.named.spectrum = summation_comb(entry.named);
+                } catch (const std::exception& error) {
+                    throw Error(where + error.what());
+                }
+            }
             entry.named.spectrum = entry.named.spectrum.scaled(1.0 / peak);
         }
         library.entries.push_back(std::move(entry));

@@ -16,7 +16,7 @@ namespace fxview::spectral {
 
 struct LibraryEntry {
     NamedSpectrum named;
-    std::string kind;  // emission or reflectance
+    std::string kind;  // emission, lines (a fluorescent line spectrum, kept as its CIE 15 summation comb) or reflectance
 };
 
 struct SpectralLibrary {

@@ -116,6 +116,17 @@ std::vector<NamedSpectrum> read_cgats(const std::string& path, Extrapolation out
             throw Error(where + error.what());
         }
         named.source = path;
+        // Regular whole-nanometre sampling is remembered (CIE 15 sums line spectra at it).
+        const int step = points.size() >= 2 ? static_cast<int>(std::lround(points[1].first - points[0].first)) : 0;
+        bool regular = step > 0;
+        for (size_t i = 0; regular && i < points.size(); ++i)
+            regular = points[i].first == points[0].first + static_cast<double>(step) * static_cast<double>(i) &&
+                      points[i].first == std::floor(points[i].first);
+        if (regular) {
+            named.data_start_nm = static_cast<int>(points.front().first);
+            named.data_end_nm = static_cast<int>(points.back().first);
+            named.data_step_nm = step;
+        }
         spectra.push_back(std::move(named));
     }
     if (spectra.empty()) throw Error(path + ": CGATS file holds no data set");

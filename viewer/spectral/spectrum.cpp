@@ -61,4 +61,12 @@ Spectrum Spectrum::operator*(const Spectrum& other) const {
     return s;
 }
 
+Spectrum summation_comb(const NamedSpectrum& named) {
+    if (named.data_step_nm <= 0) throw Error(named.name + ": line spectra need data on a regular whole-nanometre interval");
+    Spectrum comb;
+    for (int nm = std::max(named.data_start_nm, kMinNm); nm <= std::min(named.data_end_nm, kMaxNm); nm += named.data_step_nm)
+        if ((nm - named.data_start_nm) % named.data_step_nm == 0) comb[nm] = named.spectrum[nm] * named.data_step_nm;
+    return comb;
+}
+
 }  // namespace fxview::spectral

@@ -38,6 +38,15 @@ struct NamedSpectrum {
     std::string name;
     Spectrum spectrum;
     std::string source;  // where it came from, for `spectra list`
+    // The data's own sampling when it is regular on whole nanometres (e.g. 380, 385, ... 780 for
+    // colord's illuminants); step 0 when irregular or generated.
+    int data_start_nm = 0, data_end_nm = 0, data_step_nm = 0;
 };
+
+// CIE 15's colorimetry of line spectra (fluorescent lamps): tristimulus values by summation at the
+// data's own interval, not by interpolating between lines. As a 1 nm spectrum this is a comb: the
+// value times the interval at each data wavelength, zero between, so that every 1 nm integration
+// (CPU and GPU) sums exactly what CIE 15 sums. Throws Error when the data has no regular interval.
+Spectrum summation_comb(const NamedSpectrum& named);
 
 }  // namespace fxview::spectral

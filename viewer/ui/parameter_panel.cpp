@@ -112,6 +112,7 @@ bool draw_parameter_panel(render::EffectSession& session) {
             ImGui::PushID(element);
             if (draw_value(*p, part)) {
                 std::copy(part.begin(), part.end(), value.begin() + element * components);
+                effect::enforce_constraints(effect, values, p->name);  // e.g. Upper never below Lower
                 changed = true;
             }
             ImGui::PopID();

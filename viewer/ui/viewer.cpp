@@ -777,7 +777,10 @@ private:
         const auto& args = a.arguments;
         if (a.verb == "set") {
             if (!session_) throw UsageError("no effect loaded");
-            effect::set_value_from_text(session_->effect(), session_->values(), args[0] + "=" + args[1]);
+            effect::ParameterValues edited = session_->values();
+            effect::set_value_from_text(session_->effect(), edited, args[0] + "=" + args[1]);
+            effect::check_constraints(session_->effect(), edited);
+            session_->values() = std::move(edited);
             if (!session_->values().textures.empty()) session_->reload_textures();
         } else if (a.verb == "technique") {
             if (!session_) throw UsageError("no effect loaded");
