@@ -109,7 +109,8 @@ image::FloatImage plot_spectra(const std::vector<spectral::NamedSpectrum>& spect
     for (const auto& s : spectra)
         for (int nm = o.lower_nm; nm <= o.upper_nm; ++nm)
             peak = std::max(peak, o.normalise ? 1.0 : s.spectrum.at(nm));
-    const auto [y_max, y_step] = nice_axis(peak * 1.02);
+    const auto axis = nice_axis(peak * 1.02);  // not a structured binding: lambdas below capture it (clang 14)
+    const double y_max = axis.first, y_step = axis.second;
     const auto px = [&](double nm) { return left + (nm - o.lower_nm) / (o.upper_nm - o.lower_nm) * (right - left); };
     const auto py = [&](double v) { return bottom - v / y_max * (bottom - top); };
     const Rgb grid{0.88f, 0.88f, 0.88f}, ink{0.1f, 0.1f, 0.1f};
