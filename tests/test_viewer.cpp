@@ -154,3 +154,32 @@ TEST_CASE("the Fit tab's fit shows the fitted BRDF: the same pixel as fxview pic
     CHECK(failed.exit_code == 1);
     CHECK(failed.err.find("missing.csv: no such file") != std::string::npos);
 }
+
+TEST_CASE("an effect refused by the file-access policy opens once its folder is allowed, edits kept") {
+    namespace fs = std::filesystem;
+    const std::string dir = temp_path("viewer-policy"), outside = temp_path("viewer-policy-outside");
+    fs::remove_all(dir);
+    fs::remove_all(outside);
+    fs::create_directories(dir);
+    fs::create_directories(outside);
+    fs::copy_file(std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/../textures/checker.png", outside + "/checker.png");
+    const std::string effect = dir + "/outside.fx";
+    std::ofstream(effect) << "texture Tex < string ResourceName = \"" << outside << "/checker.png\"; >;\n"
+                          << "uniform sampler2D S < string Texture = \"Tex\"; >;\n"
+                          << "uniform float Gain < float UIMin = 0; float UIMax = 2; > = 1.0;\n"
+                          << "GLSLShader VS { in vec3 position; void main() { gl_Position = vec4(position, 1.0); } }\n"
+                          << "GLSLShader FS { out vec4 color; void main() { color = Gain * texture(S, vec2(0.5)); } }\n"
+                          << "technique T { pass P { VertexShader = VS; FragmentShader = FS; } }\n";
+    const std::string script = temp_path("policy-script.txt");
+    // Refused at start: no effect to edit. Allowed: it opens, and a set works.
+    std::ofstream(script) << "set Gain 0.5\nallow-path " << outside << "\nset Gain 0.5\ntechnique T\n";
+    const Result r = run("view " + effect + " --script " + script + " --frames 2");
+    CAPTURE(r.err);
+    CHECK(r.exit_code == 1);  // the first `set` found no effect: reported, the run goes on
+    CHECK(r.err.find("script line 1: no effect loaded") != std::string::npos);
+    CHECK(r.err.find("script line 3") == std::string::npos);
+    CHECK(r.err.find("script line 4") == std::string::npos);
+    // The same from the command line: --allow-path opens it at once.
+    std::ofstream(script) << "set Gain 0.5\ntechnique T\n";
+    CHECK(run("view " + effect + " --allow-path " + outside + " --script " + script + " --frames 2").exit_code == 0);
+}
