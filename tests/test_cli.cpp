@@ -223,9 +223,10 @@ TEST_CASE("spectra xyz gives the published chromaticities; list, pack, cmf and p
     // Published CIE values; tolerance as in test_spectral (1.5e-4: 5 nm -> 1 nm resampling + rounding).
     const std::tuple<const char*, const char*, double, double> cases[] = {
         {"D65", "1931", 0.3127, 0.3290}, {"A", "1931", 0.4476, 0.4074}, {"E", "1931", 1.0 / 3, 1.0 / 3}, {"D65", "1964", 0.3138, 0.3310}};
-    for (const auto& [name, observer, x, y] : cases) {
-        CAPTURE(name);
-        CAPTURE(observer);
+    for (const auto& entry : cases) {
+        const auto [name, observer, x, y] = entry;
+        const std::string shown = name;
+        CAPTURE(shown);
         const Result r = run(std::string("spectra xyz ") + name + " --observer " + observer + " --json");
         REQUIRE(r.exit_code == 0);
         const auto json = nlohmann::json::parse(r.out);

@@ -127,11 +127,12 @@ TEST_CASE("a thin-film parameter wrong on the CPU side only makes the comparison
     app::RenderRequest request = sphere_request();
     request.width = request.height = 64;
     request.effect.path = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/thinfilm.fx";
-    for (const auto& [technique, wrong] : std::vector<std::pair<std::string, std::string>>{
+    for (const auto& entry : std::vector<std::pair<std::string, std::string>>{
              {"PathDifference", "Thickness=101"}, {"Fresnel", "SubstrateIndex=1.52"}, {"FresnelExact", "SubstrateKappa=0.05"},
              {"Bubble", "FilmIndex=1.34"}, {"FabryPerot", "Incidence=1"}, {"MultiLayer", "Layers=5"},
              {"MultiLayerFaster", "SecondThickness=81"}, {"MultiLayer", "FilmDispersion=3000"}, {"BumpFresnelExact", "WaveFrequency=12.5"},
              {"BumpFresnelExact", "WaveThickness=11000"}}) {
+        const std::string technique = entry.first, wrong = entry.second;  // no structured binding: CAPTURE (clang 14)
         CAPTURE(technique);
         CAPTURE(wrong);
         const app::CompareResult r = app::compare_technique(request, technique, {wrong});
@@ -164,10 +165,11 @@ TEST_CASE("every analytic BRDF matches viewer/brdf, also with sharp highlights; 
     }
     request.effect.sets = {};
     request.scene.objects.front().mesh = "sphere";
-    for (const auto& [technique, wrong] : std::vector<std::pair<std::string, std::string>>{
+    for (const auto& entry : std::vector<std::pair<std::string, std::string>>{
              {"Lambert", "BaseColor=0.99,0.71,0.29"}, {"PBR", "Roughness=0.41"}, {"PBR", "Metallic=0.98"},
              {"ModifiedPhong", "PhongExponent=41"}, {"CookTorranceBeckmann", "Eta=1.52"}, {"CookTorranceBeckmann", "PrintedBeckmann=true"},
              {"AshikhminShirley", "Nu=22"}, {"AshikhminShirleyFit", "FitExponent=52"}}) {
+        const std::string technique = entry.first, wrong = entry.second;  // no structured binding: CAPTURE (clang 14)
         CAPTURE(technique);
         CAPTURE(wrong);
         CHECK(!app::compare_technique(request, technique, {wrong}).pass);
