@@ -4,11 +4,54 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/compare_sweep.hpp"
 #include "app/gpu_cpu_compare.hpp"
+#include "effect/parser.hpp"
 #include "core/error.hpp"
 #include "image/image_file.hpp"
 
 namespace fxview::app {
+
+namespace {
+
+int run_sweep(const RenderRequest& base, const std::vector<std::string>& techniques, int random_cases, unsigned seed, bool json) {
+    const effect::Effect effect = effect::load_effect(base.effect.path, effect_load_options(base.effect.access));
+    const std::vector<SweepCase> cases = sweep_cases(effect, random_cases, seed);
+    int failures = 0, runs = 0;
+    for (const auto& technique : techniques)
+        for (const auto& c : cases) {
+            RenderRequest request = base;
+            request.effect.sets.insert(request.effect.sets.end(), c.sets.begin(), c.sets.end());
+            CompareResult r;
+            std::string error;
+            try {
+                r = compare_technique(request, technique, {});
+            } catch (const std::exception& e) {
+                error = e.what();
+            }
+            ++runs;
+            const bool failed = !error.empty() || !r.pass;
+            failures += failed ? 1 : 0;
+            std::string sets;
+            for (const auto& s : c.sets) sets += (sets.empty() ? "" : " ") + s;
+            if (json) {
+                nlohmann::json out = {{"technique", technique}, {"case", c.label}, {"sets", c.sets}, {"pass", !failed}};
+                if (!error.empty()) out["error"] = error;
+                else out.update({{"max_abs_error", r.max_abs_error}, {"tolerance", r.tolerance}, {"exceeding", r.exceeding},
+                                 {"mismatched_8bit", r.mismatched_8bit}, {"pixels", r.pixels}});
+                std::cout << out.dump() << std::endl;
+            } else if (failed) {
+                if (!error.empty()) std::printf("FAIL  %-18s %-22s error: %s   [%s]\n", technique.c_str(), c.label.c_str(), error.c_str(), sets.c_str());
+                else std::printf("FAIL  %-18s %-22s max %.3g > tolerance %.3g (%ld pixels, %ld 8-bit)   [%s]\n", technique.c_str(),
+                                 c.label.c_str(), r.max_abs_error, r.tolerance, r.exceeding, r.mismatched_8bit, sets.c_str());
+                std::fflush(stdout);
+            }
+        }
+    if (!json) std::printf("sweep: %d frames compared (%zu techniques x %zu cases), %d failed\n", runs, techniques.size(), cases.size(), failures);
+    return failures == 0 ? 0 : 1;
+}
+
+}  // namespace
 
 CommandRunner add_compare_command(CLI::App& app) {
     struct Options {
@@ -16,6 +59,9 @@ CommandRunner add_compare_command(CLI::App& app) {
         std::vector<std::string> reference_sets;
         std::string heatmap = "out/compare.png";
         bool json = false;
+        bool sweep = false;
+        int sweep_random = 4;
+        unsigned seed = 1;
     };
     auto options = std::make_shared<Options>();
     options->scene.size = "128x128";
@@ -27,6 +73,12 @@ CommandRunner add_compare_command(CLI::App& app) {
     command->add_option("--heatmap", options->heatmap, "Error heat map (PNG); -T is appended to the name per technique")
         ->capture_default_str();
     command->add_flag("--json", options->json, "Print one JSON object per technique");
+    command->add_flag("--sweep", options->sweep,
+                      "Every parameter at its UI minimum, maximum and middle (alone), plus random combinations: a table of failures");
+    command->add_option("--sweep-random", options->sweep_random, "Random combinations per technique in --sweep")
+        ->check(CLI::Range(0, 10000))
+        ->capture_default_str();
+    command->add_option("--seed", options->seed, "Seed of the random combinations (reproducible)")->capture_default_str();
     return [options] {
         RenderRequest request = to_render_request(options->scene);
         if (request.effect.path.empty()) throw UsageError("compare needs an effect file");
@@ -34,6 +86,7 @@ CommandRunner add_compare_command(CLI::App& app) {
         std::vector<std::string> techniques;
         if (request.effect.technique.empty()) techniques = technique_names(request.effect);
         else techniques = {request.effect.technique};
+        if (options->sweep) return run_sweep(request, techniques, options->sweep_random, options->seed, options->json);
         bool all_pass = true;
         for (const auto& technique : techniques) {
             const CompareResult r = compare_technique(request, technique, options->reference_sets);
