@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
+#include <sstream>
+#include <vector>
 
 #include "core/error.hpp"
 #include "spectral/color_difference.hpp"
@@ -289,4 +292,97 @@ TEST_CASE("CIEDE2000 reproduces Sharma, Wu and Dalal's 34 test pairs, in both or
         CHECK(std::abs(delta_e_2000(b, a) - pairs[i][6]) < 1e-4);
     }
     CHECK(delta_e_2000({50, 10, -10}, {50, 10, -10}) == 0.0);
+}
+
+namespace {
+
+// colord's CGATS files read here without the spectral library's reader, and interpolated linearly to
+// `nm`: the independent side of the texture checks below.
+struct RawCgats {
+    double start = 0, end = 0;
+    std::vector<std::vector<double>> rows;
+    double at(size_t row, double nm) const {
+        const auto& r = rows[row];
+        const double step = (end - start) / static_cast<double>(r.size() - 1);
+        const double t = std::clamp((nm - start) / step, 0.0, static_cast<double>(r.size() - 1));
+        const size_t i = std::min(static_cast<size_t>(t), r.size() - 2);
+        return r[i] + (r[i + 1] - r[i]) * (t - static_cast<double>(i));
+    }
+};
+
+RawCgats read_raw(const std::string& path) {
+    std::ifstream in(path);
+    RawCgats raw;
+    bool data = false;
+    for (std::string line; std::getline(in, line);) {
+        std::istringstream words(line);
+        std::string first;
+        words >> first;
+        if (first == "SPECTRAL_START_NM") words >> raw.start;
+        else if (first == "SPECTRAL_END_NM") words >> raw.end;
+        else if (first == "BEGIN_DATA") data = true;
+        else if (first == "END_DATA") data = false;
+        else if (data && !first.empty()) {
+            std::vector<double> row{std::stod(first)};
+            for (double v; words >> v;) row.push_back(v);
+            raw.rows.push_back(row);
+        }
+    }
+    return raw;
+}
+
+float texel_channel(const texture::TextureData& t, int row_from_top, int column, int channel) {
+    const auto& level = t.faces[0][0];
+    float value;
+    std::memcpy(&value, &level.bytes[((static_cast<size_t>(row_from_top) * level.width + column) * 4 + channel) * sizeof(float)], sizeof value);
+    return value;
+}
+
+}  // namespace
+
+// The textures the shaders sample, value by value against colord-data's files: float storage holds
+// the linear interpolation of the 5 nm data to each nanometre, so the only difference is float
+// rounding (relative 6e-8; 1e-6 relative plus 1e-9 absolute allows it with margin).
+TEST_CASE("CMF and packed spectrum textures hold colord-data's values at every nanometre") {
+    const PackedTexture cmf = cmf_texture(cie1931(), cie1964(), texture::PixelFormat::RGBA32F);
+    const RawCgats cie31 = read_raw("/usr/share/colord/cmf/CIE1931-2deg-XYZ.cmf");
+    const RawCgats cie64 = read_raw("/usr/share/colord/cmf/CIE1964-10deg-XYZ.cmf");
+    REQUIRE(cie31.rows.size() == 3);
+    const int rows = cmf.texture.height();
+    for (int observer = 0; observer < 2; ++observer)
+        for (int nm = kCmfFirstNm; nm <= kCmfLastNm; ++nm)
+            for (int c = 0; c < 3; ++c) {
+                const double expected = (observer == 0 ? cie31 : cie64).at(static_cast<size_t>(c), nm);
+                // Rows are stored top row first and uploaded flipped: GL row `observer` is stored row rows-1-observer.
+                const double stored = texel_channel(cmf.texture, rows - 1 - observer, nm - kCmfFirstNm, c);
+                if (std::abs(stored - expected) > 1e-6 * std::abs(expected) + 1e-9) {
+                    CAPTURE(observer);
+                    CAPTURE(nm);
+                    CAPTURE(c);
+                    CHECK(stored == doctest::Approx(expected));
+                }
+            }
+
+    const SpectralLibrary library = load_library(FXVIEW_SOURCE_SPECTRA_DIR "/library.txt");
+    const PackedTexture packed = pack_spectra(library.spectra(), texture::PixelFormat::RGBA32F);
+    const int packed_rows = packed.texture.height();
+    const auto stored_at = [&](int index, int nm) {
+        const int i = nm - kPackedFirstNm;
+        return texel_channel(packed.texture, packed_rows - 1 - index / kSpectraPerRow,
+                             kTexelsPerSpectrum * (index % kSpectraPerRow) + i / 4, i % 4);
+    };
+    // D65 (smooth, emission): the data over its peak within 360-830 nm.
+    const RawCgats d65 = read_raw("/usr/share/colord/illuminant/CIE-D65.sp");
+    double peak = 0;
+    for (int nm = 360; nm <= 830; ++nm) peak = std::max(peak, d65.at(0, nm));
+    for (int nm = std::max(static_cast<int>(d65.start), kPackedFirstNm); nm <= std::min(static_cast<int>(d65.end), 835); ++nm)
+        CHECK(stored_at(library.index_of("D65"), nm) == doctest::Approx(d65.at(0, nm) / peak).epsilon(1e-6));
+    // F11 (lines): five times the data at its 5 nm wavelengths over the same kind of peak, zero between.
+    const RawCgats f11 = read_raw("/usr/share/colord/illuminant/CIE-F11.sp");
+    double f11_peak = 0;
+    for (int nm = 360; nm <= 830; ++nm) f11_peak = std::max(f11_peak, f11.at(0, nm));
+    for (int nm = static_cast<int>(f11.start); nm <= static_cast<int>(f11.end); ++nm) {
+        const double expected = (nm - static_cast<int>(f11.start)) % 5 == 0 ? 5.0 * f11.at(0, nm) / f11_peak : 0.0;
+        CHECK(stored_at(library.index_of("F11"), nm) == doctest::Approx(expected).epsilon(1e-6));
+    }
 }
