@@ -215,7 +215,9 @@ GLSLShader BumpFresnelExactFS {
         vec3 t = normalize(fs_in.tangent - n * dot(n, fs_in.tangent));
         vec3 b = cross(n, t);
         float w = kTwoPi * WaveFrequency;
-        vec2 phase = w * fs_in.uv;
+        // Reduced to one period before sin/cos: at 64 waves the argument reaches 400 rad, where float
+        // sin/cos lose 1e-5 (as cd.fx found).
+        vec2 phase = kTwoPi * fract(WaveFrequency * fs_in.uv);
         float height = WaveAmplitude * sin(phase.x) * sin(phase.y);
         vec2 slope = WaveAmplitude * w * vec2(cos(phase.x) * sin(phase.y), sin(phase.x) * cos(phase.y));
         Film f = film_at(fs_in.world_position, -slope.x * t - slope.y * b + n, fs_in.uv);

@@ -20,6 +20,13 @@ SpectralSetup spectral_setup(const ReferenceContext& c) {
     return s;
 }
 
+double output_gain(const SpectralSetup& s, double reference_brightness) {
+    double ybar = 0;
+    for (int nm = s.lower; nm <= s.upper; nm += s.steps) ybar += spectral::cmf_value(*s.cmf, s.observer, nm)[1] * s.cmf_unit;
+    const double k_gain = s.k > 0 && ybar > 0 ? s.k * ybar : 1.0;  // a user's k against the automatic 1 / sum ybar
+    return std::max(1.0, s.brightness * k_gain / reference_brightness);
+}
+
 std::array<double, 4> to_rgba(const spectral::Vec3& xyz, int mode) {
     const auto mapping = mode == 1 ? spectral::GamutMapping::Desaturate
                          : mode == 2 ? spectral::GamutMapping::Scale

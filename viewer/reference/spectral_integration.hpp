@@ -53,6 +53,10 @@ double colour_uncertainty(const SpectralSetup& s, Uncertainty uncertainty) {
     return spread * (3.240479 + 1.537150 + 0.498535) * (s.k > 0 ? s.k : 1.0 / ybar) * s.brightness;
 }
 
+// How much larger than at Brightness = `reference_brightness` with automatic k the linear output is:
+// absolute float errors grow with it, so absolute tolerances measured at the defaults scale by it.
+double output_gain(const SpectralSetup& s, double reference_brightness);
+
 // The effect's output for an XYZ value: linear sRGB after the gamut mapping `mode` (OutputMode), alpha 1.
 std::array<double, 4> to_rgba(const spectral::Vec3& xyz, int mode);
 

@@ -106,8 +106,10 @@ Reference make(Reflectance reflectance, double tolerance, std::string why) {
     Reference r;
     r.shade = [reflectance](const ShadingInput& in, const ReferenceContext& c) { return film_colour(film(in, c), c, reflectance); };
     r.tolerance = tolerance;
-    r.tolerance_for = [tolerance](const ReferenceContext& c) { return tolerance * averaging_factor(c); };
-    r.why = std::move(why) + "; scaled by sqrt(effective samples of an equal-energy light / of the light), 1 for smooth lights";
+    // Measured at the default Brightness 2 with automatic k; a brighter output scales the error alike.
+    r.tolerance_for = [tolerance](const ReferenceContext& c) { return tolerance * averaging_factor(c) * output_gain(spectral_setup(c), 2.0); };
+    r.why = std::move(why) + "; scaled by sqrt(effective samples of an equal-energy light / of the light) (1 for smooth lights) "
+                             "and by the output's gain over Brightness 2 with automatic k";
     return r;
 }
 
