@@ -209,7 +209,8 @@ TEST_CASE("every shipped effect passes check and renders") {
         CHECK(check.exit_code == 0);
         const Result list = run("list --json " + path);
         REQUIRE(list.exit_code == 0);
-        for (const auto& technique : nlohmann::json::parse(list.out)["techniques"]) {
+        const auto listed = nlohmann::json::parse(list.out);  // kept alive: the loop walks into it (ASan found this)
+        for (const auto& technique : listed["techniques"]) {
             const std::string name = technique["name"];
             CAPTURE(name);
             const Result render = run("render " + path + " -t " + name + " --size 48x48 --out " + temp_path("shipped.png"));
