@@ -13,8 +13,10 @@ namespace {
 
 // Prints an error as it is ("file:line: message", one or several lines).
 void print_error(const std::string& message) {
-    std::cout << message;
-    if (message.empty() || message.back() != '\n') std::cout << "\n";
+    constexpr size_t kMax = 65536;  // compiler logs can be long; a hostile file must not make them endless
+    const std::string shown = message.size() <= kMax ? message : message.substr(0, kMax) + "\n... (messages cut at 64 KB)";
+    std::cout << shown;
+    if (shown.empty() || shown.back() != '\n') std::cout << "\n";
 }
 
 // Checks one effect; returns the number of problems found. Nothing a file does stops the check of

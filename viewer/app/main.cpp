@@ -10,6 +10,12 @@
 #include "core/error.hpp"
 #include "ui/command_view.hpp"
 
+// A message may quote what a file or argument held; none is printed beyond 8 KB.
+static std::string clipped_message(const std::string& message) {
+    constexpr size_t kMax = 8192;
+    return message.size() <= kMax ? message : message.substr(0, kMax) + "... (message cut at 8 KB)";
+}
+
 int main(int argc, char** argv) {
     using namespace fxview;
     CLI::App app{"fxview - a shader viewer for spectral and physically based materials", "fxview"};
@@ -29,7 +35,7 @@ int main(int argc, char** argv) {
         {"brdf-grid", app::add_brdf_grid_command(app)},
     };
     if (argc > 1 && argv[1][0] != '-' && !runners.contains(argv[1])) {
-        std::cerr << "fxview: unknown command '" << argv[1] << "' (expected view, render, pick, info, list, check, spectra, compare or bench)\n";
+        std::cerr << "fxview: unknown command '" << clipped_message(argv[1]).substr(0, 80) << "' (expected view, render, pick, info, list, check, spectra, compare or bench)\n";
         return 2;
     }
     try {
@@ -41,20 +47,20 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::cerr << "fxview: " << e.what() << "\nRun 'fxview --help' or 'fxview COMMAND --help' for usage.\n";
+        std::cerr << "fxview: " << clipped_message(e.what()) << "\nRun 'fxview --help' or 'fxview COMMAND --help' for usage.\n";
         return 2;
     }
     try {
         for (const CLI::App* command : app.get_subcommands()) return runners.at(command->get_name())();
         return 2;
     } catch (const UsageError& e) {
-        std::cerr << "fxview: " << e.what() << "\n";
+        std::cerr << "fxview: " << clipped_message(e.what()) << "\n";
         return 2;
     } catch (const std::bad_alloc&) {
         std::cerr << "fxview: error: out of memory (a file asked for more than this machine has; see --limit)\n";
         return 1;
     } catch (const std::exception& e) {
-        std::cerr << "fxview: error: " << e.what() << "\n";
+        std::cerr << "fxview: error: " << clipped_message(e.what()) << "\n";
         return 1;
     }
 }

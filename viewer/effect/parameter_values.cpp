@@ -1,5 +1,7 @@
 #include "effect/parameter_values.hpp"
 
+#include "core/text.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -29,10 +31,10 @@ double srgb_to_linear(double encoded) {
 void set_value_from_text(const Effect& effect, ParameterValues& values, const std::string& assignment) {
     const size_t equals = assignment.find('=');
     if (equals == std::string::npos || equals == 0)
-        throw UsageError("--set needs NAME=VALUE, got '" + assignment + "'");
+        throw UsageError("--set needs NAME=VALUE, got '" + excerpt(assignment) + "'");
     const std::string name = assignment.substr(0, equals), text = assignment.substr(equals + 1);
     const Parameter* parameter = effect.find_parameter(name);
-    if (!parameter) throw UsageError("--set: the effect has no parameter '" + name + "'");
+    if (!parameter) throw UsageError("--set: the effect has no parameter '" + excerpt(name) + "'");
     if (!parameter->semantic.empty())
         throw UsageError("--set: " + name + " is bound to the semantic " + parameter->semantic + " and set by fxview");
     if (is_sampler_type(parameter->type)) {
@@ -47,7 +49,7 @@ void set_value_from_text(const Effect& effect, ParameterValues& values, const st
         for (size_t i = 1; i < text.size(); i += 2) {
             unsigned byte = 0;
             const auto [end, error] = std::from_chars(text.data() + i, text.data() + i + 2, byte, 16);
-            if (error != std::errc() || end != text.data() + i + 2) throw UsageError("--set " + name + ": bad hex colour '" + text + "'");
+            if (error != std::errc() || end != text.data() + i + 2) throw UsageError("--set " + name + ": bad hex colour '" + excerpt(text) + "'");
             parsed.push_back(i < 7 ? srgb_to_linear(byte / 255.0) : byte / 255.0);  // alpha stays linear
         }
         if (target.size() == 4 && parsed.size() == 3) parsed.push_back(1.0);
@@ -66,11 +68,19 @@ void set_value_from_text(const Effect& effect, ParameterValues& values, const st
             }
             double value = 0.0;
             const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), value);
-            if (error != std::errc() || end != item.data() + item.size() || item.empty())
-                throw UsageError("--set " + name + ": '" + item + "' is not a number");
+            if (error != std::errc() || end != item.data() + item.size() || item.empty() || !std::isfinite(value))
+                throw UsageError("--set " + name + ": '" + excerpt(item) + "' is not a finite number");
             parsed.push_back(value);
         }
     }
+    // int, ivec and bool parameters take whole numbers a 32-bit int holds (bool: 0 or 1).
+    const bool integral = parameter->type == "int" || parameter->type == "bool" || parameter->type.rfind("ivec", 0) == 0 ||
+                          parameter->type.rfind("bvec", 0) == 0;
+    const bool boolean = parameter->type == "bool" || parameter->type.rfind("bvec", 0) == 0;
+    for (double v : parsed)
+        if (integral && (v != std::floor(v) || v < (boolean ? 0.0 : -2147483648.0) || v > (boolean ? 1.0 : 2147483647.0)))
+            throw UsageError("--set " + name + ": " + parameter->type + " takes " + (boolean ? "true, false, 0 or 1" : "whole numbers of a 32-bit int") +
+                             ", not " + excerpt(text));
     if (parsed.size() != target.size())
         throw UsageError("--set " + name + ": " + parameter->type + " needs " + std::to_string(target.size()) +
                          " value(s), got " + std::to_string(parsed.size()));

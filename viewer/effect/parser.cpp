@@ -338,6 +338,10 @@ private:
         if (static_cast<int>(value.numbers.size()) != needed)
             fail(first, "default of " + parameter.type + " " + parameter.name + " has " + std::to_string(value.numbers.size()) +
                             " value(s), needs " + std::to_string(needed));
+        const bool integral = parameter.type == "int" || parameter.type.rfind("ivec", 0) == 0;
+        for (double v : value.numbers)
+            if (integral && (v != std::floor(v) || v < -2147483648.0 || v > 2147483647.0))
+                fail(first, "default of " + parameter.type + " " + parameter.name + " must be whole numbers a 32-bit int holds");
     }
 
     void parse_shader_block() {

@@ -173,6 +173,7 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
             total_bytes += bytes;
             check_limit(effect.limits, "effect-texture-bytes", total_bytes, data.source, "textures of the effect, in all");
             if (stored != data.format) data = texture::convert(data, stored);  // no copy when nothing changes
+            file_texture_bytes_ = total_bytes;
             GpuTexture gpu;
             gpu.texture = gl::upload_texture(data, {resource.srgb, true});
             gpu.type = data.type;
@@ -189,14 +190,39 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
             throw effect::EffectError(resource.where, "texture " + resource.name + ": " + error.what());
         }
     }
+    render_target_sizes(1, 1);  // fixed Dimensions are checked at load (`check`); ratios at each frame size
+}
+
+std::vector<glm::ivec2> EffectResources::render_target_sizes(int frame_width, int frame_height) const {
+    std::vector<glm::ivec2> sizes;
+    std::int64_t total = file_texture_bytes_;
+    for (const auto& resource : effect_.textures) {
+        if (!resource.render_target) continue;
+        const double width = resource.dimensions ? resource.dimensions->x : std::max(1.0, std::round(frame_width * static_cast<double>(resource.viewport_ratio.x)));
+        const double height = resource.dimensions ? resource.dimensions->y : std::max(1.0, std::round(frame_height * static_cast<double>(resource.viewport_ratio.y)));
+        const texture::PixelFormat format = storage_format(resource.storage, texture::PixelFormat::RGBA32F);
+        const double bytes = width * height * (format == texture::PixelFormat::RGBA8 ? 4 : format == texture::PixelFormat::RGBA16F ? 8 : 16);
+        try {
+            check_limit(effect_.limits, "texture-dimension", static_cast<std::int64_t>(std::min(std::max(width, height), 1e15)),
+                        "render target " + resource.name, "side");
+            check_limit(effect_.limits, "texture-bytes", static_cast<std::int64_t>(std::min(bytes, 1e15)), "render target " + resource.name, "size");
+            total += static_cast<std::int64_t>(bytes);
+            check_limit(effect_.limits, "effect-texture-bytes", total, "render target " + resource.name,
+                        "textures and render targets of the effect, in all");
+        } catch (const Error& error) {
+            throw effect::EffectError(resource.where, error.what());
+        }
+        sizes.emplace_back(static_cast<int>(width), static_cast<int>(height));
+    }
+    return sizes;
 }
 
 void EffectResources::fit_render_targets(int frame_width, int frame_height) {
+    const std::vector<glm::ivec2> sizes = render_target_sizes(frame_width, frame_height);
+    size_t index = 0;
     for (const auto& resource : effect_.textures) {
         if (!resource.render_target) continue;
-        const glm::ivec2 size = resource.dimensions.value_or(glm::ivec2(
-            std::max(1, static_cast<int>(std::lround(frame_width * resource.viewport_ratio.x))),
-            std::max(1, static_cast<int>(std::lround(frame_height * resource.viewport_ratio.y)))));
+        const glm::ivec2 size = sizes[index++];
         const auto found = textures_.find(resource.name);
         if (found != textures_.end() && found->second.width == size.x && found->second.height == size.y) continue;
         GpuTexture gpu;

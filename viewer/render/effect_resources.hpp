@@ -4,6 +4,7 @@
 // ResourceName "spectral:cmf" and "spectral:library" are generated: the CIE colour matching
 // functions (colord-data) and the packed spectra of spectra/library.txt ($FXVIEW_SPECTRA_DIR).
 #pragma once
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -45,7 +46,11 @@ public:
 
 private:
     void generate(const effect::TextureResource& resource);
+    // Each render target's size for a frame, checked (with the file textures) against the effect's
+    // budgets before anything is allocated; EffectError at the target's declaration.
+    std::vector<glm::ivec2> render_target_sizes(int frame_width, int frame_height) const;
 
+    std::int64_t file_texture_bytes_ = 0;  // what the effect's file textures store
     const effect::Effect& effect_;
     std::map<std::string, GpuTexture> textures_;
     std::map<std::string, spectral::PackedTexture> generated_;

@@ -1,6 +1,7 @@
 #include "render/effect_session.hpp"
 
 #include "core/error.hpp"
+#include "core/text.hpp"
 
 namespace fxview::render {
 
@@ -59,7 +60,7 @@ void EffectSession::select_technique(const std::string& name) {
     if (!loaded_->techniques.count(name)) {
         std::string names;
         for (const auto& t : loaded_->effect->techniques) names += (names.empty() ? "" : ", ") + t.name;
-        throw UsageError(path_ + " has no technique '" + name + "' (it has " + names + ")");
+        throw UsageError(path_ + " has no technique '" + excerpt(name) + "' (it has " + excerpt(names, 2000) + ")");
     }
     technique_ = name;
 }

@@ -32,8 +32,14 @@ std::string_view next_word(std::string_view line, size_t& i) {
 // tinyobjloader trusts the indices of `f` lines and the numbers of `v`/`vn`/`vt` lines; a face
 // naming a normal that no `vn` line defines made it read out of bounds. This pass checks every
 // reference and number first, so that each problem is reported with its line.
+// tinyobjloader needs ~200 bytes per triangle and triangulates a polygon in quadratic time: both
+// are bounded before it runs (documented in docs/effect-format.md, "Budgets").
+constexpr std::int64_t kMaxTriangles = 2000000;
+constexpr std::int64_t kMaxPolygonCorners = 1024;
+
 void validate_obj(const std::string& path, const std::string& text) {
     std::int64_t counts[3] = {0, 0, 0};  // v, vt, vn: totals, for references to later lines
+    std::int64_t triangles = 0;
     for (size_t pass = 0; pass < 2; ++pass) {
         std::int64_t seen[3] = {0, 0, 0};
         size_t start = 0;
@@ -49,16 +55,22 @@ void validate_obj(const std::string& path, const std::string& text) {
             if (kind >= 0) {
                 ++seen[kind];
                 if (pass == 1) continue;
+                int numbers = 0;
                 for (std::string_view word = next_word(line, i); !word.empty(); word = next_word(line, i)) {
+                    ++numbers;
                     double value = 0;
                     const auto [stop, error] = std::from_chars(word.data(), word.data() + word.size(), value);
                     if (error != std::errc() || stop != word.data() + word.size() || !std::isfinite(value))
                         throw Error(where() + "'" + excerpt(word) + "' is not a finite number");
                 }
+                if (numbers < (kind == 1 ? 1 : 3)) throw Error(where() + "'" + std::string(keyword) + "' needs " + (kind == 1 ? "u v" : "x y z"));
                 continue;
             }
             if (keyword != "f" || pass == 0) continue;
+            std::int64_t corners = 0;
             for (std::string_view corner = next_word(line, i); !corner.empty(); corner = next_word(line, i)) {
+                if (++corners > kMaxPolygonCorners)
+                    throw Error(where() + "a face with more than " + std::to_string(kMaxPolygonCorners) + " corners");
                 size_t part = 0;
                 for (size_t from = 0; from <= corner.size() && part < 3; ++part) {
                     size_t slash = corner.find('/', from);
@@ -84,6 +96,10 @@ void validate_obj(const std::string& path, const std::string& text) {
                 if (part > 3 || std::count(corner.begin(), corner.end(), '/') > 2)
                     throw Error(where() + "'" + excerpt(corner) + "' is not a valid face corner");
             }
+            if (corners < 3) throw Error(where() + "a face needs at least three corners");
+            triangles += corners - 2;
+            if (triangles > kMaxTriangles)
+                throw Error(where() + "the mesh exceeds " + std::to_string(kMaxTriangles) + " triangles");
         }
         std::copy(seen, seen + 3, counts);
     }
@@ -96,7 +112,8 @@ MeshData load_obj(const std::string& path, const ResourceLimits& limits) {
     if (!std::filesystem::is_regular_file(path, error)) throw Error(path + ": no such OBJ file");
     checked_file_size(path, limits);
     std::ifstream file(path, std::ios::binary);
-    const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // a UTF-8 byte order mark is no content
     if (!file && !file.eof()) throw Error(path + ": cannot read OBJ");
     validate_obj(path, text);
     tinyobj::attrib_t attributes;

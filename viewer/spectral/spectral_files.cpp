@@ -22,7 +22,8 @@ std::vector<std::string> words(const std::string& line) {
 bool to_double(std::string text, double& value) {
     if (!text.empty() && text.front() == '"' && text.back() == '"' && text.size() >= 2) text = text.substr(1, text.size() - 2);
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return !text.empty() && error == std::errc() && end == text.data() + text.size() && std::isfinite(value);
+    // Spectral values beyond 1e30 are no measurement; their products would overflow.
+    return !text.empty() && error == std::errc() && end == text.data() + text.size() && std::isfinite(value) && std::abs(value) <= 1e30;
 }
 
 std::string unquote(std::string text) {
@@ -31,6 +32,9 @@ std::string unquote(std::string text) {
 }
 
 }  // namespace
+
+constexpr size_t kMaxDataSets = 4096;
+constexpr size_t kMaxName = 256;
 
 std::vector<NamedSpectrum> read_cgats(const std::string& path, Extrapolation outside, const ResourceLimits& limits) {
     checked_file_size(path, limits);
@@ -41,7 +45,7 @@ std::vector<NamedSpectrum> read_cgats(const std::string& path, Extrapolation out
     std::vector<std::string> fields;
     std::vector<std::vector<std::string>> rows;
     std::vector<int> row_lines;
-    int number = 0;
+    int number = 0, format_line = 1;
     enum { Header, Format, Data, Done } state = Header;
     while (std::getline(file, line)) {
         ++number;
@@ -61,7 +65,10 @@ std::vector<NamedSpectrum> read_cgats(const std::string& path, Extrapolation out
                                 (bands_field ? "a whole number in 2..100000" : "a wavelength in 0..100000 nm"));
                 (w[0] == "SPECTRAL_START_NM" ? start_nm : w[0] == "SPECTRAL_END_NM" ? end_nm : bands) = value;
             }
-            else if (w[0] == "BEGIN_DATA_FORMAT") state = Format;
+            else if (w[0] == "BEGIN_DATA_FORMAT") {
+                state = Format;
+                format_line = number;
+            }
             else if (w[0] == "BEGIN_DATA") state = Data;
         } else if (state == Format) {
             if (w[0] == "END_DATA_FORMAT") state = Header;
@@ -69,12 +76,15 @@ std::vector<NamedSpectrum> read_cgats(const std::string& path, Extrapolation out
         } else if (state == Data) {
             if (w[0] == "END_DATA") state = Done;
             else {
+                // colord's files hold 1 to 14 data sets; each becomes a 4.8 KB spectrum.
+                if (rows.size() == kMaxDataSets)
+                    throw Error(path + ":" + std::to_string(number) + ": more than " + std::to_string(kMaxDataSets) + " data sets in one file");
                 rows.push_back(w);
                 row_lines.push_back(number);
             }
         }
     }
-    if (fields.empty()) throw Error(path + ": not a CGATS spectral file (no BEGIN_DATA_FORMAT)");
+    if (fields.empty()) throw Error(path + ":1: not a CGATS spectral file (no BEGIN_DATA_FORMAT)");
     if (state != Done) throw Error(path + ":" + std::to_string(number) + ": CGATS data never ends (missing END_DATA)");
     std::vector<std::pair<int, double>> band_nm;  // field index -> wavelength
     int id_field = -1;
@@ -83,12 +93,12 @@ std::vector<NamedSpectrum> read_cgats(const std::string& path, Extrapolation out
         if (fields[i].rfind("SPEC_", 0) == 0 && to_double(fields[i].substr(5), nm)) band_nm.emplace_back(static_cast<int>(i), nm);
         else if (fields[i] == "SAMPLE_ID" || fields[i] == "SAMPLE_NAME") id_field = static_cast<int>(i);
     }
-    if (band_nm.empty()) throw Error(path + ": CGATS file has no SPEC_nnn fields");
+    if (band_nm.empty()) throw Error(path + ":" + std::to_string(format_line) + ": CGATS file has no SPEC_nnn fields");
     // The header's start, end and band count are authoritative (some files name the fields in
     // other units, e.g. SPEC_300000 for 300 nm); field names are the fallback.
     if (bands >= 2 && end_nm > start_nm) {
         if (static_cast<size_t>(bands) != band_nm.size())
-            throw Error(path + ": SPECTRAL_BANDS says " + std::to_string(static_cast<int>(bands)) + " but " +
+            throw Error(path + ":" + std::to_string(format_line) + ": SPECTRAL_BANDS says " + std::to_string(static_cast<int>(bands)) + " but " +
                         std::to_string(band_nm.size()) + " SPEC fields are declared");
         for (size_t i = 0; i < band_nm.size(); ++i) band_nm[i].second = start_nm + (end_nm - start_nm) * static_cast<double>(i) / (bands - 1);
     }
@@ -110,6 +120,7 @@ std::vector<NamedSpectrum> read_cgats(const std::string& path, Extrapolation out
         named.name = id_field >= 0 ? unquote(row[static_cast<size_t>(id_field)])
                      : rows.size() == 1 ? display
                                         : display + "-" + std::to_string(r);
+        if (named.name.size() > kMaxName) throw Error(where + "a spectrum name of " + std::to_string(named.name.size()) + " characters (at most 256)");
         try {
             named.spectrum = Spectrum::from_points(points, outside);
         } catch (const Error& error) {
@@ -129,7 +140,7 @@ std::vector<NamedSpectrum> read_cgats(const std::string& path, Extrapolation out
         }
         spectra.push_back(std::move(named));
     }
-    if (spectra.empty()) throw Error(path + ": CGATS file holds no data set");
+    if (spectra.empty()) throw Error(path + ":" + std::to_string(number) + ": CGATS file holds no data set");
     return spectra;
 }
 
@@ -184,7 +195,7 @@ NamedSpectrum read_csv(const std::string& path, Extrapolation outside, const Res
             throw Error(path + ":" + std::to_string(number) + ": wavelengths must increase (" + std::to_string(nm) + " nm)");
         points.emplace_back(nm, v);
     }
-    if (points.size() < 2) throw Error(path + ": a spectrum needs at least two 'nm,value' rows");
+    if (points.size() < 2) throw Error(path + ":" + std::to_string(number) + ": a spectrum needs at least two 'nm,value' rows");
     return {std::filesystem::path(path).stem().string(), Spectrum::from_points(points, outside), path};
 }
 

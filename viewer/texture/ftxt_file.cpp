@@ -52,6 +52,7 @@ TextureData load_ftxt(const std::string& path, const ResourceLimits& limits) {
     const auto where = [&]() { return path + ":" + std::to_string(number) + ": "; };
     while (std::getline(file, line)) {
         ++number;
+        if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 byte order mark
         const size_t first = line.find_first_not_of(" \t\r");
         if (first == std::string::npos || line[first] == '#') continue;
         if (width == 0) {
