@@ -221,3 +221,38 @@ TEST_CASE("malformed presets, grids, MERL headers and spectra are rejected with 
     CHECK(nan.exit_code != 0);
     CHECK(has(nan.err, "nan.csv:2: expected 'nm,value' (finite numbers)"));
 }
+
+TEST_CASE("render targets, polygon fans, endless spectra and odd --set values stay within the budgets") {
+    const std::string dir = folder("more");
+    std::string targets;
+    for (int i = 0; i < 50; ++i)
+        targets += "texture RT" + std::to_string(i) + " : RENDERCOLORTARGET < int2 Dimensions = {8192, 8192}; string Format = \"32F\"; >;\n";
+    const std::string many = write(dir + "/targets.fx", targets + kShaders + kTechnique);
+    const Result r = run("render " + many + " --size 32x32 --out " + dir + "/o.png");
+    CHECK(r.exit_code == 1);
+    CHECK(has(r.err, "targets.fx:1: render target RT0: size 1073741824 exceeds the budget texture-bytes"));
+    CHECK(run("check " + many).exit_code == 1);  // fixed Dimensions are checked when the effect loads
+    const std::string ratio = write(dir + "/ratio.fx", "texture R : RENDERCOLORTARGET < float2 ViewportRatio = {64, 64}; >;\n" + kShaders + kTechnique);
+    const Result r2 = run("render " + ratio + " --size 256x256 --out " + dir + "/o.png");
+    CHECK(r2.exit_code == 1);
+    CHECK(has(r2.err, "ratio.fx:1: render target R: size 4294967296 exceeds the budget texture-bytes"));
+
+    std::string fan = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf";
+    for (int i = 0; i < 2000; ++i) fan += " " + std::to_string(i % 3 + 1);
+    const Result f = run("render --mesh " + write(dir + "/fan.obj", fan + "\n") + " --size 16x16 --out " + dir + "/o.png");
+    CHECK(f.exit_code == 1);
+    CHECK(has(f.err, "fan.obj:4: a face with more than 1024 corners"));
+
+    std::string rows = "CGATS.17\nSPECTRAL_START_NM 380\nSPECTRAL_END_NM 780\nSPECTRAL_BANDS 2\nBEGIN_DATA_FORMAT\nSAMPLE_ID SPEC_380 SPEC_780\n"
+                       "END_DATA_FORMAT\nBEGIN_DATA\n";
+    for (int i = 0; i < 5000; ++i) rows += "\"A\" 1 2\n";
+    const Result s = run("spectra xyz " + write(dir + "/rows.sp", rows + "END_DATA\n"));
+    CHECK(s.exit_code != 0);
+    CHECK(has(s.err, "rows.sp:4105: more than 4096 data sets in one file"));
+
+    const std::string effect = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/debug.fx";
+    CHECK(run("render " + effect + " --set Ambient=nan --size 8x8 --out " + dir + "/o.png").exit_code == 2);
+    const Result huge = run("render " + effect + " --technique " + std::string(100000, 'T') + " --size 8x8 --out " + dir + "/o.png");
+    CHECK(huge.exit_code == 2);
+    CHECK(huge.err.size() < 9000);  // the name is not echoed in full
+}
