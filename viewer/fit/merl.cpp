@@ -64,6 +64,7 @@ MerlBrdf read_merl(const std::string& path, const ResourceLimits& limits) {
     merl.data.resize(3 * kCount);
     in.read(reinterpret_cast<char*>(merl.data.data()), static_cast<std::streamsize>(merl.data.size() * sizeof(double)));
     if (!in) throw Error(path + ": truncated (a MERL BRDF holds 3 x 1 458 000 doubles after the header)");
+    if (in.peek() != std::char_traits<char>::eof()) throw Error(path + ": holds more bytes than a MERL BRDF (3 x 1 458 000 doubles after the header)");
     for (double v : merl.data)
         if (!std::isfinite(v)) throw Error(path + ": holds a value that is not a finite number");
     return merl;
