@@ -35,6 +35,14 @@ std::string resolve_texture_path(const std::string& file, const std::string& eff
 
 namespace {
 
+// What a texture occupies once stored in `format` (all faces and levels).
+std::int64_t stored_bytes(const TextureData& data, texture::PixelFormat format) {
+    std::int64_t bytes = 0;
+    for (const auto& face : data.faces)
+        for (const auto& level : face) bytes += static_cast<std::int64_t>(texture::level_size(format, level.width, level.height, level.depth));
+    return bytes;
+}
+
 // Loads a texture resource's file(s) into the shape its declaration asks for.
 TextureData load_resource(const effect::TextureResource& resource, const std::vector<std::string>& paths, const ResourceLimits& limits) {
     if (resource.type == TextureType::Cube && paths.size() == 6) {
@@ -48,10 +56,8 @@ TextureData load_resource(const effect::TextureResource& resource, const std::ve
             cube.format = face.format;
             cube.source += (cube.source.empty() ? "" : ";") + path;
             cube.faces.push_back(std::move(face.faces[0]));
-            std::int64_t bytes = 0;  // checked face by face: six faces each within budget can still exceed it
-            for (const auto& levels : cube.faces)
-                for (const auto& level : levels) bytes += static_cast<std::int64_t>(level.bytes.size());
-            check_limit(limits, "texture-bytes", bytes, path, "cube map, with this face,");
+            // Checked face by face: six faces each within budget can still exceed it together.
+            check_limit(limits, "texture-bytes", stored_bytes(cube, cube.format), path, "cube map, with this face,");
         }
         return cube;
     }
@@ -131,7 +137,6 @@ const spectral::PackedTexture* EffectResources::generated(const std::string& tex
 EffectResources::EffectResources(const effect::Effect& effect, const effect::ParameterValues& values,
                                  const std::vector<std::string>& texture_dirs)
     : effect_(effect) {
-    std::int64_t total_bytes = 0;
     for (const auto& resource : effect.textures) {
         if (resource.render_target) continue;
         try {
@@ -152,7 +157,7 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
             for (const auto& path : paths) effect.access.require(path, "texture file");
             // A texture may use what is left of the effect's budget, so that a file too large for it
             // is refused from its header, before it is decoded.
-            const std::int64_t left = effect.limits.effect_texture_bytes - total_bytes;
+            const std::int64_t left = effect.limits.effect_texture_bytes - file_texture_bytes_;
             ResourceLimits limits = effect.limits;
             limits.texture_bytes = std::min(limits.texture_bytes, left);
             TextureData data;
@@ -161,19 +166,16 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
             } catch (const BudgetError& error) {
                 if (left >= effect.limits.texture_bytes) throw;
                 throw BudgetError(paths[0] + ": the effect's textures would exceed the budget effect-texture-bytes = " +
-                                  std::to_string(effect.limits.effect_texture_bytes) + " (" + std::to_string(total_bytes) +
+                                  std::to_string(effect.limits.effect_texture_bytes) + " (" + std::to_string(file_texture_bytes_) +
                                   " used by the textures before this one; raise it with --limit effect-texture-bytes=N)");
             }
             // The stored size (after conversion, e.g. 8-bit to float) counts too; checked before converting.
             const texture::PixelFormat stored = storage_format(resource.storage, data.format);
-            std::int64_t bytes = 0;
-            for (const auto& face : data.faces)
-                for (const auto& level : face) bytes += static_cast<std::int64_t>(texture::level_size(stored, level.width, level.height, level.depth));
+            const std::int64_t bytes = stored_bytes(data, stored);
             check_limit(effect.limits, "texture-bytes", bytes, data.source, "stored texture of");
-            total_bytes += bytes;
-            check_limit(effect.limits, "effect-texture-bytes", total_bytes, data.source, "textures of the effect, in all");
+            file_texture_bytes_ += bytes;
+            check_limit(effect.limits, "effect-texture-bytes", file_texture_bytes_, data.source, "textures of the effect, in all");
             if (stored != data.format) data = texture::convert(data, stored);  // no copy when nothing changes
-            file_texture_bytes_ = total_bytes;
             GpuTexture gpu;
             gpu.texture = gl::upload_texture(data, {resource.srgb, true});
             gpu.type = data.type;
