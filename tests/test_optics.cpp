@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "optics/grating.hpp"
 #include "optics/thesis_models.hpp"
@@ -175,6 +176,45 @@ TEST_CASE("a CD's tracks: N-slit interference peaks where the grating equation s
     CHECK(grating_intensity(1600.0 * 0.3125 / 500.0, 20) == doctest::Approx(1.0).epsilon(1e-12));
     CHECK(grating_intensity(740.0 * (500.0 / 740.0) / 500.0, 20) == doctest::Approx(1.0).epsilon(1e-12));
     CHECK(grating_intensity(1600.0 * 0.29 / 500.0, 20) < 0.05);  // 1.3° off the order: dark (20 tracks)
+}
+
+TEST_CASE("the sine integral against Abramowitz & Stegun's table 5.1") {
+    // Tabulated to 12 digits; the series (t <= 4) and the continued fraction (t > 4) hold 1e-12.
+    const std::vector<std::pair<double, double>> table = {{0.5, 0.493107418043}, {1.0, 0.946083070367}, {2.0, 1.605412976803},
+                                                          {4.0, 1.758203138949}, {5.0, 1.549931244945}, {10.0, 1.658347594219},
+                                                          {20.0, 1.548241701043}};
+    for (const auto& entry : table) {
+        const double t = entry.first, si = entry.second;
+        CAPTURE(t);
+        CHECK(sine_integral(t) == doctest::Approx(si).epsilon(1e-12).scale(1.0));
+        CHECK(sine_integral(-t) == -sine_integral(t));
+    }
+    CHECK(sine_integral(1e6) == doctest::Approx(std::numbers::pi / 2).epsilon(2e-6).scale(1.0));  // |Si − π/2| <= 1/t
+}
+
+TEST_CASE("a CD patch averaged over a pixel: closed forms against quadrature of the phasor sums") {
+    // Two methods that share no formula (Fejér series and sine integral against Gauss-Legendre
+    // quadrature of explicit phasors); both are accurate to ~1e-12, so 1e-9 can only fail on a defect.
+    for (const int tracks : {1, 2, 7, 60, 200})
+        for (const double x : {0.0, 0.004, 0.13, 0.5, 2.37, -3.01})
+            for (const double width : {0.0, 1e-5, 3e-3, 0.02, 0.4, 1.0, 2.7}) {
+                CAPTURE(tracks);
+                CAPTURE(x);
+                CAPTURE(width);
+                CHECK(tracks_box_average(x, width, tracks) ==
+                      doctest::Approx(tracks_box_average_quadrature(x, width, tracks)).epsilon(1e-9).scale(1.0));
+                CHECK(patch_box_average(x, width, tracks) ==
+                      doctest::Approx(patch_box_average_quadrature(x, width, tracks)).epsilon(1e-9).scale(1.0));
+            }
+    // Limits nobody needs a formula for: a point footprint is the point value; a footprint of whole
+    // periods averages the N-track term to 1/N (Parseval); a footprint much wider than the patch's
+    // fringe holds all of sinc²'s unit area; the zero order is a full-strength highlight.
+    CHECK(tracks_box_average(0.13, 0.0, 7) == doctest::Approx(grating_intensity(0.13, 7)).epsilon(1e-12));
+    CHECK(tracks_box_average(0.37, 3.0, 7) == doctest::Approx(1.0 / 7).epsilon(1e-12));
+    CHECK(patch_box_average(0.0, 100.0 / 60, 60) == doctest::Approx(1.0 / 100).epsilon(3e-3));  // tails beyond ±50 fringes: 2/(π² 50)/100
+    CHECK(tracks_box_average(0.0, 0.0, 60) * patch_box_average(0.0, 0.0, 60) == doctest::Approx(1.0));
+    // Off the zero order along the tracks, the first zero of the patch lies at N y = 1.
+    CHECK(patch_box_average(1.0 / 60, 0.0, 60) < 1e-20);
 }
 
 TEST_CASE("the thesis' CD intensity (eq. 72) with its spacing rule and hard threshold") {

@@ -4,8 +4,10 @@
 // Each wavelength's diffracted intensity is weighted by the light spectrum and integrated against
 // the CMFs; a substrate spectrum adds the disc's own diffuse colour and a cube map its mirrored
 // surroundings (fig. 34, 36).
-// Thesis: eq. 70-72 as documented. Grating: the Fraunhofer interference of N tracks, exact for a
-// reflection grating of N illuminated tracks (orders where d (l + v)·g = mλ).
+// Thesis: eq. 70-72 as documented. Grating: Fraunhofer diffraction of a square patch of N tracks
+// (N tracks across, N·d along them), the phase across the tracks (orders where d (l + v)·g = mλ) and
+// along them (all orders lie where (l + v)·t = 0; the zero order is the mirror highlight), averaged
+// over each pixel's footprint. docs/diffraction.md.
 // CPU references: viewer/reference/cd_reference.cpp.
 #include "standard.glsl"
 #include "spectral.glsl"
@@ -22,7 +24,7 @@ uniform float TrackSpacing < string UIName = "Track spacing d"; float UIMin = 30
 uniform float Threshold < string UIName = "Threshold"; float UIMin = 0; float UIMax = 1; string UIGroup = "Thesis (eq. 72)";
                           string UIHelp = "Intensities below it are cut to 0 (the thesis' hard cut)"; > = 0.5;
 uniform int Tracks < string UIName = "Illuminated tracks N"; int UIMin = 1; int UIMax = 200; string UIGroup = "Grating";
-                     string UIHelp = "More tracks: sharper orders (width about 1/N); beyond ~100 they get narrower than the 1 nm sampling"; > = 60;
+                     string UIHelp = "Tracks lit coherently (a square patch N tracks wide and as long): more tracks give narrower orders and a smaller mirror highlight. Orders narrower than a pixel are averaged over it, so they stay smooth but dim; raise Brightness to see them"; > = 60;
 
 // The surroundings mirrored in the disc (fig. 34, 36): a cube map added in RGB after the spectral part.
 texture EnvironmentTexture < string ResourceName = "sky_cross.png"; string ResourceType = "CUBE"; string ColorSpace = "sRGB"; >;
@@ -75,29 +77,98 @@ GLSLShader ThesisFS {
     }
 }
 
+const float PI = 3.14159265359;
+
+// sinc(a / π) = sin(a) / a for |a| < 1 from its series (the quotient of a rounded sine by a small a
+// would lose digits); the error of the omitted term is a^10 / 4e7 < 3e-8.
+float sinc_series(float a) {
+    float a2 = a * a;
+    return 1.0 - a2 / 6.0 * (1.0 - a2 / 20.0 * (1.0 - a2 / 42.0 * (1.0 - a2 / 72.0)));
+}
+
+vec2 turned(vec2 phasor, vec2 turn) { return vec2(phasor.x * turn.x - phasor.y * turn.y, phasor.x * turn.y + phasor.y * turn.x); }
+
+// The N-track term (sin Nπx / (N sin πx))² averaged over [x ± w/2]: its Fourier series (the Fejér
+// kernel) times the box's transform, (1/N²)[N + 2 Σ_{k<N} (N−k) cos(2πkx) sinc(kw)]. cos(2πkx) and
+// sin(πkw) come from turning phasors, so no sine sees a large argument.
+float tracks_average(float x, float w, int n) {
+    if (n <= 1) return 1.0;
+    x -= floor(x + 0.5);
+    float h = w - 2.0 * floor(0.5 * w);  // sin(πkw) = sin(πkh) for integer k
+    vec2 turn_x = vec2(cos(2.0 * PI * x), sin(2.0 * PI * x)), phase_x = turn_x;
+    vec2 turn_w = vec2(cos(PI * h), sin(PI * h)), phase_w = turn_w;
+    float sum = 0.0;
+    for (int k = 1; k < n; ++k) {
+        float a = PI * float(k) * w;
+        sum += float(n - k) * phase_x.x * (a < 1.0 ? sinc_series(a) : phase_w.y / a);
+        phase_x = turned(phase_x, turn_x);
+        phase_w = turned(phase_w, turn_w);
+    }
+    return (float(n) + 2.0 * sum) / float(n * n);
+}
+
+// Si(2πz) − sin²(πz)/(πz) = π ∫₀ᶻ sinc²: the sine integral from its series up to 2π|z| = 4 and from
+// E₁'s continued fraction beyond (12 terms: 6e-9 at 4); trigonometric functions see z's fraction only.
+vec2 complex_divide(vec2 a, vec2 b) { return vec2(a.x * b.x + a.y * b.y, a.y * b.x - a.x * b.y) / dot(b, b); }
+
+float sinc_squared_integral(float z) {
+    float t = 2.0 * PI * abs(z), r = abs(z) - floor(abs(z) + 0.5), si;
+    if (t <= 4.0) {
+        float term = t, t2 = t * t;
+        si = t;
+        for (int k = 1; k < 12; ++k) {
+            term *= -t2 / (float(2 * k) * float(2 * k + 1));
+            si += term / float(2 * k + 1);
+        }
+    } else {
+        vec2 f = vec2(25.0, t);
+        for (int i = 12; i >= 1; --i) f = vec2(float(2 * i - 1), t) - float(i * i) * complex_divide(vec2(1.0, 0.0), f);
+        si = 0.5 * PI + complex_divide(vec2(cos(2.0 * PI * r), -sin(2.0 * PI * r)), f).y;
+    }
+    float s = sin(PI * r);
+    float value = abs(z) > 0.0 ? (si - s * s / (PI * abs(z))) / PI : 0.0;
+    return sign(z) * value;
+}
+
+float sinc_squared(float z) {
+    float r = z - 2.0 * floor(0.5 * z + 0.5);  // sin(πz) = sin(πr)
+    float a = PI * z, s = abs(a) < 1.0 ? sinc_series(a) : sin(PI * r) / a;
+    return s * s;
+}
+
+// The along-track term sinc²(Ny) of the patch averaged over [y ± w/2]. Below 1/20 of a fringe the
+// difference of the integrals would cancel in float: Simpson's rule, exact there to 3e-7.
+float patch_average(float y, float w, int n) {
+    float z = float(n) * y, width = float(n) * w;
+    if (width < 0.05) return (sinc_squared(z - 0.5 * width) + 4.0 * sinc_squared(z) + sinc_squared(z + 0.5 * width)) / 6.0;
+    return (sinc_squared_integral(z + 0.5 * width) - sinc_squared_integral(z - 0.5 * width)) / width;
+}
+
 GLSLShader GratingFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Disc d = disc_at(fs_in.world_position, fs_in.normal, fs_in.tangent, fs_in.uv);
-        float path = TrackSpacing * dot(d.l + d.v, d.across);  // nm between neighbouring tracks
+        // Path differences in nm: between neighbouring tracks, and along a track per track spacing.
+        float across = TrackSpacing * dot(d.l + d.v, d.across), along = TrackSpacing * dot(d.l + d.v, d.along);
+        // The pixel's extent in both: the box the orders are averaged over.
+        vec2 footprint = vec2(abs(dFdxFine(across)) + abs(dFdyFine(across)), abs(dFdxFine(along)) + abs(dFdyFine(along)));
         float diffuse = max(dot(d.n, d.l), 0.0);
         bool lit = dot(d.n, d.l) > 0.0 && dot(d.n, d.v) > 0.0;
         int tracks = max(Tracks, 1);
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
         for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
-            // The intensity has period 1 in x = path / nm: reduce x to [-0.5, 0.5) first, so that sin()
-            // sees small arguments and the quotient stays accurate next to an order (x near 0).
-            float x = path / float(nm);
-            float a = 3.14159265359 * (x - floor(x + 0.5));
-            float s = float(tracks) * sin(a);
-            float ratio = abs(s) > 1e-6 ? sin(float(tracks) * a) / s : 1.0;
-            add_sample(xyz, ybar_sum, nm, lit ? ratio * ratio : 0.0, diffuse);
+            float wavelength = float(nm);
+            float intensity = lit ? patch_average(along / wavelength, footprint.y / wavelength, tracks) : 0.0;
+            // Past the patch's fringes the product is below anything the colour shows.
+            if (intensity > 1e-9) intensity *= tracks_average(across / wavelength, footprint.x / wavelength, tracks);
+            add_sample(xyz, ybar_sum, nm, intensity, diffuse);
         }
         color = vec4(xyz_to_srgb(xyz * normalisation(ybar_sum) * Brightness) + environment(d), 1.0);
         fx_capture();
+        fx_capture_footprint = vec4(footprint, 0.0, 0.0);
     }
 }
 

@@ -1,8 +1,13 @@
 #include "app/gpu_cpu_compare.hpp"
 
+#include <atomic>
 #include <cmath>
+#include <exception>
 #include <filesystem>
 #include <limits>
+#include <mutex>
+#include <thread>
+#include <vector>
 
 #include "context/context.hpp"
 #include "effect/preset.hpp"
@@ -55,10 +60,11 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
     result.tolerance_reason = ref->why;
 
     // No MSAA: every pixel's colour and captured inputs must come from one fragment.
-    gl::RenderTarget target({request.width, request.height, 5, 0});
+    gl::RenderTarget target({request.width, request.height, 6, 0});
     session.render(request.scene, target);
     const image::FloatImage gpu = target.read_color(0), positions = target.read_color(1), normals = target.read_color(2),
-                            uvs = target.read_color(3), tangents = target.read_color(4);
+                            uvs = target.read_color(3), tangents = target.read_color(4),
+                            footprints = target.read_color(5);
 
     effect::ParameterValues cpu_values = session.values();
     for (const auto& assignment : reference_sets) effect::set_value_from_text(session.effect(), cpu_values, assignment);
@@ -68,6 +74,52 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
     const glm::dvec3 camera(math::camera_world_position(request.scene.camera.pose));
     const glm::dvec3 light(request.scene.light.world_position());
 
+    // The references are pure functions of the pixel's inputs: shade rows on every core, then judge
+    // the pixels in order.
+    struct Shaded {
+        std::array<double, 4> cpu{};
+        double slack = 0;
+    };
+    std::vector<Shaded> shaded(static_cast<size_t>(request.width) * static_cast<size_t>(request.height));
+    const auto input_at = [&](int x, int y) {
+        reference::ShadingInput input;
+        input.position = glm::dvec3(positions.pixel(x, y)[0], positions.pixel(x, y)[1], positions.pixel(x, y)[2]);
+        input.normal = glm::dvec3(normals.pixel(x, y)[0], normals.pixel(x, y)[1], normals.pixel(x, y)[2]);
+        input.uv = glm::dvec2(uvs.pixel(x, y)[0], uvs.pixel(x, y)[1]);
+        input.tangent = glm::dvec3(tangents.pixel(x, y)[0], tangents.pixel(x, y)[1], tangents.pixel(x, y)[2]);
+        input.footprint =
+            glm::dvec4(footprints.pixel(x, y)[0], footprints.pixel(x, y)[1], footprints.pixel(x, y)[2], footprints.pixel(x, y)[3]);
+        input.camera = camera;
+        input.light = light;
+        return input;
+    };
+    std::atomic<int> next_row{0};
+    std::exception_ptr failure;
+    std::mutex failure_mutex;
+    const auto shade_rows = [&] {
+        try {
+            for (int y = next_row++; y < request.height; y = next_row++)
+                for (int x = 0; x < request.width; ++x) {
+                    if (positions.pixel(x, y)[3] <= 0.0f) continue;  // not covered
+                    const reference::ShadingInput input = input_at(x, y);
+                    Shaded& out = shaded[static_cast<size_t>(y) * static_cast<size_t>(request.width) + static_cast<size_t>(x)];
+                    out.cpu = ref->shade(input, reference_context);
+                    out.slack = ref->slack ? ref->slack(input, reference_context) : 0.0;
+                }
+        } catch (...) {
+            const std::lock_guard lock(failure_mutex);
+            if (!failure) failure = std::current_exception();
+            next_row = request.height;
+        }
+    };
+    {
+        std::vector<std::jthread> workers;
+        const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+        for (unsigned i = 1; i < cores; ++i) workers.emplace_back(shade_rows);
+        shade_rows();
+    }
+    if (failure) std::rethrow_exception(failure);
+
     result.heat_map = image::FloatImage(request.width, request.height, 4);
     double error_sum = 0;
     for (int y = 0; y < request.height; ++y)
@@ -75,15 +127,9 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
             float* heat_pixel = result.heat_map.pixel(x, y);
             heat_pixel[3] = 1.0f;
             if (positions.pixel(x, y)[3] <= 0.0f) continue;  // not covered
-            reference::ShadingInput input;
-            input.position = glm::dvec3(positions.pixel(x, y)[0], positions.pixel(x, y)[1], positions.pixel(x, y)[2]);
-            input.normal = glm::dvec3(normals.pixel(x, y)[0], normals.pixel(x, y)[1], normals.pixel(x, y)[2]);
-            input.uv = glm::dvec2(uvs.pixel(x, y)[0], uvs.pixel(x, y)[1]);
-            input.tangent = glm::dvec3(tangents.pixel(x, y)[0], tangents.pixel(x, y)[1], tangents.pixel(x, y)[2]);
-            input.camera = camera;
-            input.light = light;
-            const std::array<double, 4> cpu = ref->shade(input, reference_context);
-            const double slack = ref->slack ? ref->slack(input, reference_context) : 0.0;
+            const Shaded& pixel = shaded[static_cast<size_t>(y) * static_cast<size_t>(request.width) + static_cast<size_t>(x)];
+            const std::array<double, 4>& cpu = pixel.cpu;
+            const double slack = pixel.slack;
             double pixel_error = 0;
             bool mismatch = false;
             for (int c = 0; c < 4; ++c) {

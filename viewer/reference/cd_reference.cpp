@@ -1,7 +1,8 @@
-// CD diffraction from viewer/optics/grating (double precision): the thesis' eq. 72 and the N-track
-// interference, the latter summed as explicit phasors (the GLSL uses the closed form). Both are
-// steep or discontinuous in x = d u / λ, whose float value on the GPU is a few ulps off; the slack
-// is what that uncertainty can change at each pixel.
+// CD diffraction from viewer/optics/grating (double precision): the thesis' eq. 72, and the square
+// patch of N tracks averaged over the pixel's footprint by quadrature of explicit phasor sums (the
+// GLSL uses a Fourier series and the sine integral). Both are steep or discontinuous in
+// x = d u / λ, whose float value on the GPU is a few ulps off; the slack is what that uncertainty
+// can change at each pixel.
 #include "reference/cd_reference.hpp"
 
 #include <algorithm>
@@ -31,10 +32,11 @@ Disc disc(const ShadingInput& in) {
 }
 
 // Diffracted intensity at one wavelength, and how far it can move when x is off by its float error.
+// The value is computed only where it is wanted (the grating's quadrature is costly).
 struct Sample {
     double intensity, uncertainty;
 };
-using Diffraction = std::function<Sample(const Disc&, const ReferenceContext&, int nm)>;
+using Diffraction = std::function<Sample(const Disc&, const ShadingInput&, const ReferenceContext&, int nm, bool want_intensity)>;
 
 // The float error of x = d·u/λ on the GPU: a handful of roundings in normalisations, dot products
 // and the division (each ~6e-8 relative; 1e-6 is generous), plus the error of u itself, which is
@@ -42,7 +44,7 @@ using Diffraction = std::function<Sample(const Disc&, const ReferenceContext&, i
 // ulps of each cosine, 4e-7.
 double x_error(double x, double spacing_nm, int nm) { return 1e-6 * std::abs(x) + 4e-7 * spacing_nm / nm; }
 
-Sample thesis_sample(const Disc& d, const ReferenceContext& c, int nm) {
+Sample thesis_sample(const Disc& d, const ShadingInput&, const ReferenceContext& c, int nm, bool) {
     const double threshold = c.number("Threshold");
     const auto r = optics::thesis::cd_intensity(c.number("TrackSpacing"), std::abs(glm::dot(d.along, d.l)), glm::dot(d.n, d.v),
                                                 glm::dot(d.n, d.l), nm, threshold);
@@ -53,16 +55,26 @@ Sample thesis_sample(const Disc& d, const ReferenceContext& c, int nm) {
     return {r.intensity, near_integer ? 1.0 : near_threshold ? threshold + error : error};
 }
 
-Sample grating_sample(const Disc& d, const ReferenceContext& c, int nm) {
+// The square patch of N tracks, averaged over the pixel's footprint as the GPU captured it: by
+// quadrature of the explicit phasor sum (optics/grating.hpp), not by the shader's series. Its slack
+// is the change the float error of x and y can cause, from the closed forms.
+Sample grating_sample(const Disc& d, const ShadingInput& in, const ReferenceContext& c, int nm, bool want_intensity) {
     const int tracks = std::max(1, static_cast<int>(c.number("Tracks")));
     if (glm::dot(d.n, d.l) <= 0 || glm::dot(d.n, d.v) <= 0) return {0.0, 0.0};
     const double spacing = c.number("TrackSpacing");
-    const double x = spacing * glm::dot(d.l + d.v, d.across) / nm;
-    const double intensity = optics::grating_intensity_phasors(x, tracks);
-    const double dx = x_error(x, spacing, nm);
-    const double spread = std::max(std::abs(optics::grating_intensity(x + dx, tracks) - intensity),
-                                   std::abs(optics::grating_intensity(x - dx, tracks) - intensity));
-    return {intensity, spread};
+    const double x = spacing * glm::dot(d.l + d.v, d.across) / nm, y = spacing * glm::dot(d.l + d.v, d.along) / nm;
+    const double wx = in.footprint.x / nm, wy = in.footprint.y / nm;
+    Sample s{0.0, 0.0};
+    if (want_intensity)
+        s.intensity = optics::tracks_box_average_quadrature(x, wx, tracks) * optics::patch_box_average_quadrature(y, wy, tracks);
+    const double dx = x_error(x, spacing, nm), dy = x_error(y, spacing, nm);
+    const double at = optics::tracks_box_average(x, wx, tracks) * optics::patch_box_average(y, wy, tracks);
+    for (const double ex : {-dx, dx})
+        for (const double ey : {-dy, dy})
+            s.uncertainty = std::max(s.uncertainty, std::abs(optics::tracks_box_average(x + ex, wx, tracks) *
+                                                                 optics::patch_box_average(y + ey, wy, tracks) -
+                                                             at));
+    return s;
 }
 
 // The surroundings mirrored in the disc, as the GPU reads its cube map.
@@ -81,7 +93,7 @@ Reference make(Diffraction diffraction) {
         const double diffuse = std::max(glm::dot(d.n, d.l), 0.0);
         std::array<double, 4> rgba = to_rgba(integrate(s, false, [&](int nm) {
             return spectral::packed_value(*s.spectra, light, nm) *
-                   (diffraction(d, c, nm).intensity + weight * spectral::packed_value(*s.spectra, substrate, nm) * diffuse);
+                   (diffraction(d, in, c, nm, true).intensity + weight * spectral::packed_value(*s.spectra, substrate, nm) * diffuse);
         }), s.mapping);
         const glm::dvec4 mirrored = environment(in, c).value * c.number("EnvironmentWeight");
         for (int i = 0; i < 3; ++i) rgba[static_cast<size_t>(i)] += mirrored[i];
@@ -91,7 +103,7 @@ Reference make(Diffraction diffraction) {
         const SpectralSetup s = spectral_setup(c);
         const int light = static_cast<int>(c.number("LightSpectrum"));
         const Disc d = disc(in);
-        return colour_uncertainty(s, [&](int nm) { return diffraction(d, c, nm).uncertainty * spectral::packed_value(*s.spectra, light, nm); }) +
+        return colour_uncertainty(s, [&](int nm) { return diffraction(d, in, c, nm, false).uncertainty * spectral::packed_value(*s.spectra, light, nm); }) +
                environment(in, c).seam_spread * c.number("EnvironmentWeight");
     };
     // The mirrored cube map is read through sRGB decoding and bilinear weights whose precision GL

@@ -21,6 +21,9 @@ struct ShadingInput {
     glm::dvec3 tangent{0.0};   // interpolated, not normalised
     glm::dvec3 camera{0.0};    // world-space camera position
     glm::dvec3 light{0.0};     // world-space light position
+    // What the technique captured besides (capture.glsl's attachment 5); for cd.fx's Grating the
+    // pixel's extent in path difference (nm) across and along the tracks.
+    glm::dvec4 footprint{0.0};
 };
 
 // What a reference may read besides the pixel's inputs: the parameter values and the same
