@@ -126,6 +126,24 @@ TEST_CASE("every thin-film technique matches its CPU reference (exact ones: char
     }
 }
 
+// Two corners the sweep found: waves tilting the normal past the horizon with a film as dense as
+// the air (cos θ ≈ 1e-4 used to refract to cos θ1 = 0 in float: a top interface reflecting
+// everything over a mirror, 0/0 and black pixels), and waves of slope 12 whose float phase rounding
+// the reference must allow for.
+TEST_CASE("bump-mapped films hold at grazing tilts and steep waves") {
+    app::RenderRequest request = sphere_request();
+    request.width = request.height = 48;
+    request.effect.path = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/thinfilm.fx";
+    for (const auto& variant : std::vector<std::vector<std::string>>{{"FilmIndex=1"}, {"WaveAmplitude=0.069", "WaveFrequency=27"}}) {
+        request.effect.sets = variant;
+        CAPTURE(variant.front());
+        const app::CompareResult r = app::compare_technique(request, "BumpFresnelExact", {});
+        CHECK(r.pass);
+        CHECK(r.mismatched_8bit == 0);
+        MESSAGE(variant.front(), ": max ", r.max_abs_error, " slack pixels ", r.pixels_within_slack);
+    }
+}
+
 TEST_CASE("a thin-film parameter wrong on the CPU side only makes the comparison fail") {
     app::RenderRequest request = sphere_request();
     request.width = request.height = 64;

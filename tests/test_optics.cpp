@@ -162,6 +162,12 @@ TEST_CASE("grazing incidence reflects everything") {
     CHECK(transfer_matrix_reflectance(stack, 500.0, 1e-7) == doctest::Approx(1.0).epsilon(1e-5));
 }
 
+TEST_CASE("equal indices do not bend light, even a hair from grazing") {
+    // cos θt = cos θi exactly when n_t = n_i; the printed 1 - (1 - cos²) loses cos_i below 1e-8.
+    for (const double cos_i : {1e-12, 1e-9, 1e-4, 0.5})
+        CHECK(refracted_cos(Complex(1.33), Complex(1.33), Complex(cos_i)).real() == doctest::Approx(cos_i).epsilon(1e-12));
+}
+
 TEST_CASE("a CD's tracks: N-slit interference peaks where the grating equation says") {
     // Closed form against the explicit phasor sum (1e-12), for track counts from 2 to 50.
     for (const int tracks : {2, 7, 50})

@@ -21,10 +21,12 @@ vec2 c_exp_i(vec2 phase) { return exp(-phase.y) * vec2(cos(phase.x), sin(phase.x
 
 // ---- real Fresnel coefficients (Code 12, Code 14) for the thesis' models ----
 // cos of the refraction angle in n_t for light from n_i at cos_i (eq. 58/59 with the square, as in
-// Code 12); 0 past the critical angle.
+// Code 12); 0 past the critical angle. cos_t² = 1 - ratio² (1 - cos_i²) is summed as
+// (1 - ratio²) + ratio² cos_i²: near grazing incidence on equal indices the printed form rounds
+// 1 - cos_i² to 1 and returns cos_t = 0 for cos_i ≈ 1e-4, an interface that reflects everything.
 float refracted_cos(float n_i, float n_t, float cos_i) {
     float ratio = n_i / n_t;
-    return sqrt(max(1.0 - ratio * ratio * (1.0 - cos_i * cos_i), 0.0));
+    return sqrt(max((1.0 - ratio * ratio) + ratio * ratio * cos_i * cos_i, 0.0));
 }
 // Code 14: (r∥, r⊥) for light in n_i at cos_i meeting n_t at cos_t. Both denominators vanish only
 // at grazing incidence on equal indices, where there is no interface: r = 0 there (the limit as
@@ -36,9 +38,10 @@ vec2 fresnel_combined(float cos_i, float cos_t, float n_i, float n_t) {
 
 // ---- complex Fresnel coefficients for the exact models ----
 // cos θ in a medium of index n (complex) for light from a real n0 at cos0 (Snell's invariant n0 sin θ0).
+// Summed as (1 - ratio²) + ratio² cos0², as refracted_cos.
 vec2 refracted_cos_c(float n0, vec2 n, float cos0) {
-    vec2 ratio = c_div(vec2(n0, 0.0), n);
-    return c_sqrt(vec2(1.0, 0.0) - c_mul(ratio, ratio) * (1.0 - cos0 * cos0));
+    vec2 ratio = c_div(vec2(n0, 0.0), n), ratio2 = c_mul(ratio, ratio);
+    return c_sqrt((vec2(1.0, 0.0) - ratio2) + ratio2 * (cos0 * cos0));
 }
 struct Amplitude { vec2 s; vec2 p; };
 // A vanishing denominator means grazing incidence on equal indices: no interface, r = 0.

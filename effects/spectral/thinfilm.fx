@@ -241,11 +241,12 @@ GLSLShader BubbleFS {
     void main() {
         Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
         float ratio = OuterIndex / FilmIndex;
-        float sin2_film = ratio * ratio * (1.0 - f.cos0 * f.cos0);
+        // cos²θ1 without the cancellation of 1 - sin² near grazing incidence (see refracted_cos).
+        float cos1_squared = (1.0 - ratio * ratio) + ratio * ratio * f.cos0 * f.cos0;
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
-        if (sin2_film <= 1.0) {
-            float cos1 = sqrt(1.0 - sin2_film);
+        if (cos1_squared >= 0.0) {
+            float cos1 = sqrt(cos1_squared);
             vec2 r = fresnel_combined(f.cos0, cos1, OuterIndex, FilmIndex);
             vec2 r2 = r * r;
             vec2 one_minus_r2_squared = (1.0 - r2) * (1.0 - r2);
@@ -258,7 +259,7 @@ GLSLShader BubbleFS {
                 add_sample(xyz, ybar_sum, nm, 0.5 * (reflectance.x + reflectance.y));
             }
         } else {
-            float kappa = sqrt(sin2_film - 1.0);
+            float kappa = sqrt(-cos1_squared);
             Amplitude r = fresnel_c(vec2(OuterIndex, 0.0), vec2(f.cos0, 0.0), vec2(FilmIndex, 0.0), vec2(0.0, kappa));
             // sin²φ = (1 - Re r²) / 2 for |r| = 1, per polarisation.
             vec2 sin2_phi = 0.5 * (1.0 - vec2(c_mul(r.s, r.s).x, c_mul(r.p, r.p).x));

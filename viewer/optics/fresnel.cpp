@@ -3,9 +3,10 @@
 namespace fxview::optics {
 
 Complex refracted_cos(Complex n_i, Complex n_t, Complex cos_i) {
-    const Complex ratio = n_i / n_t;
-    const Complex sin2_t = ratio * ratio * (1.0 - cos_i * cos_i);
-    Complex cos_t = std::sqrt(1.0 - sin2_t);
+    const Complex ratio2 = (n_i / n_t) * (n_i / n_t);
+    // 1 - ratio² (1 - cos_i²), summed so that equal indices give cos_t = cos_i even where 1 - cos_i²
+    // rounds to 1 (cos_i below 1e-8).
+    Complex cos_t = std::sqrt((1.0 - ratio2) + ratio2 * cos_i * cos_i);
     // The principal root already has Re ≥ 0; on the imaginary axis (total internal reflection in a
     // lossless medium) pick Im ≥ 0 so that exp(i k n d cos) decays.
     if (cos_t.real() == 0.0 && cos_t.imag() < 0.0) cos_t = -cos_t;

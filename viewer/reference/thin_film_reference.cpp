@@ -6,8 +6,10 @@
 #include "reference/thin_film_reference.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 
 #include "optics/thesis_models.hpp"
@@ -167,6 +169,25 @@ std::map<std::string, Reference> thin_film_references() {
     // Bump mapping (eq. 69): the same film under a wave-tilted normal, thickened at the crests.
     Reference bump = make(single_film, 5e-5, kPhaseWhy);
     bump.shade = [single_film](const ShadingInput& in, const ReferenceContext& c) { return film_colour(bumped_film(in, c), c, single_film); };
+    // The GPU reduces the wave's phase f·uv to one period in float; its rounding (an ulp of f·u, 1e-6
+    // at 13.5 waves) moves slope and thickness, by an amount that grows with the waves' steepness
+    // (slope A·2πf reaches 40). The slack is the colour change that shifting u or v by that much causes.
+    bump.slack = [single_film](const ShadingInput& in, const ReferenceContext& c) {
+        const double frequency = c.number("WaveFrequency");
+        const std::array<double, 4> at = film_colour(bumped_film(in, c), c, single_film);
+        double slack = 0;
+        for (int axis = 0; axis < 2; ++axis) {
+            const float waves = static_cast<float>(frequency * in.uv[axis]);
+            const double ulp = std::nextafter(waves, std::numeric_limits<float>::infinity()) - waves;
+            for (const double sign : {-1.0, 1.0}) {
+                ShadingInput moved = in;
+                moved.uv[axis] += sign * ulp / frequency;
+                const std::array<double, 4> shifted = film_colour(bumped_film(moved, c), c, single_film);
+                for (int i = 0; i < 3; ++i) slack = std::max(slack, std::abs(shifted[static_cast<size_t>(i)] - at[static_cast<size_t>(i)]));
+            }
+        }
+        return slack;
+    };
     all.emplace("BumpFresnelExact", std::move(bump));
     all.emplace("Bubble", make([](const Film& f, double nm) {
         return optics::transfer_matrix_reflectance(optics::Stack{f.n0, {{f.n1, f.thickness}}, f.n0}, nm, f.cos0);
