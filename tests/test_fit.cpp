@@ -84,7 +84,7 @@ TEST_CASE("BRDF grid files: round trip, and errors that name file and line") {
 
 TEST_CASE("synthetic BRDFs of the model are fitted exactly (the thesis' own check of its LM)") {
     const std::array<double, 3> cd{0.10, 0.25, 0.40}, cs{0.60, 0.45, 0.30};
-    const fit::FitResult fit = fit::fit_ashikhmin_shirley(synthetic(80.0, cd, cs), {});
+    const fit::FitResult fit = fit::fit_ashikhmin_shirley(synthetic(80.0, cd, cs), {.solver = fit::Solver::Thesis});
     // Start ns = 25, cd = cs = 0.2 as in the thesis; 500 iterations. The data are the model's, so
     // the minimum is exact; 1e-6 is far below any fitting effect and far above double rounding.
     CHECK(fit.ns == doctest::Approx(80.0).epsilon(1e-6));
@@ -103,6 +103,16 @@ TEST_CASE("synthetic BRDFs of the model are fitted exactly (the thesis' own chec
         CHECK((1.0 - fit.rs) * fit.rd_renderer[c] == doctest::Approx(fit.cd[c]));
         CHECK(fit.rs * fit.cs_renderer[c] == doctest::Approx(fit.cs[c]));
     }
+    CHECK(fit.converged);
+    // The default solver finds the same exact minimum, without a start.
+    const fit::FitResult global = fit::fit_ashikhmin_shirley(synthetic(80.0, cd, cs), {});
+    CHECK(global.ns == doctest::Approx(80.0).epsilon(1e-6));
+    for (size_t c = 0; c < 3; ++c) {
+        CHECK(global.cd[c] == doctest::Approx(cd[c]).epsilon(1e-6));
+        CHECK(global.cs[c] == doctest::Approx(cs[c]).epsilon(1e-6));
+    }
+    CHECK(global.converged);
+    CHECK(global.warnings.empty());
 }
 
 TEST_CASE("eq. 4.29: the analytic derivative of the lobe by ns matches central differences") {
@@ -127,7 +137,9 @@ TEST_CASE("fitting another model's data: a finite error that the fit reduces, ne
     });
     const fit::FitResult fit = fit::fit_ashikhmin_shirley(data, {});
     CHECK(std::isfinite(fit.error_rgb));
-    CHECK(fit.error_per_iteration.back() < 0.5 * fit.error_per_iteration.front());
+    const fit::FitResult thesis = fit::fit_ashikhmin_shirley(data, {.solver = fit::Solver::Thesis});
+    CHECK(thesis.error_per_iteration.back() < 0.5 * thesis.error_per_iteration.front());
+    CHECK(fit.cost <= thesis.cost * (1 + 1e-9));
     CHECK(fit.ns > 10);
     CHECK(fit.cs[0] > fit.cs[2]);  // gold-like: more red than blue in the highlight
     CHECK_THROWS_AS(fit::fit_ashikhmin_shirley(data, {.limit_deg = 0}), UsageError);

@@ -119,7 +119,7 @@ std::function<std::array<double, 3>(const glm::dvec3&, const glm::dvec3&)> analy
 
 CommandRunner add_fit_command(CLI::App& app) {
     struct Options {
-        std::string data, out, preset, preview, progress;
+        std::string data, out, preset, preview, progress, solver = "global";
         fit::FitOptions fit;
         PreviewOptions preview_options;
         bool json = false;
@@ -131,9 +131,13 @@ CommandRunner add_fit_command(CLI::App& app) {
         ->capture_default_str()->check(CLI::Range(5.0, 90.0));
     command->add_option("--iterations", o->fit.iterations, "Levenberg-Marquardt iterations of stage 1")
         ->capture_default_str()->check(CLI::Range(1, 100000));
-    command->add_option("--start-ns", o->fit.start_ns, "Starting exponent (the thesis starts low: 25-50)")->capture_default_str();
-    command->add_option("--start-cd", o->fit.start_cd, "Starting diffuse weight")->capture_default_str();
-    command->add_option("--start-cs", o->fit.start_cs, "Starting specular weight")->capture_default_str();
+    command->add_option("--solver", o->solver,
+                        "global: the optimum of the weighted least squares (bounded: ns > 0, cd >= 0, 0 <= cs <= 1); "
+                        "thesis: seed 000's two-stage Levenberg-Marquardt from --start-* (may stall; reported)")
+        ->capture_default_str()->check(CLI::IsMember({"global", "thesis"}));
+    command->add_option("--start-ns", o->fit.start_ns, "Thesis solver: starting exponent (the thesis starts low: 25-50)")->capture_default_str();
+    command->add_option("--start-cd", o->fit.start_cd, "Thesis solver: starting diffuse weight")->capture_default_str();
+    command->add_option("--start-cs", o->fit.start_cs, "Thesis solver: starting specular weight")->capture_default_str();
     command->add_option("--out,-o", o->out, "Write the parameters as CSV");
     command->add_option("--preset", o->preset, "Write a preset of effects/brdf/analytic.fx (technique AshikhminShirleyFit)");
     command->add_option("--preview", o->preview, "Write measured | model | difference as an image (PNG, EXR, PFM)");
@@ -142,6 +146,8 @@ CommandRunner add_fit_command(CLI::App& app) {
     command->add_option("--progress", o->progress, "Write the error number e per iteration as CSV (fig. 5.2)");
     command->add_flag("--json", o->json, "Print the result as JSON");
     return [o] {
+        o->fit.solver = o->solver == "thesis" ? fit::Solver::Thesis : fit::Solver::Global;
+        fit::validate(o->fit);  // before reading the data: a bad start is a usage error (exit 2)
         const fit::BrdfGrid measured = fit::read_measurement(o->data);
         const auto start = std::chrono::steady_clock::now();
         const fit::FitResult r = fit::fit_ashikhmin_shirley(measured, o->fit);
@@ -164,18 +170,23 @@ CommandRunner add_fit_command(CLI::App& app) {
                                         {"iterations", o->fit.iterations}, {"accepted_steps", r.stage1.accepted},
                                         {"ns", r.ns}, {"cd", r.cd}, {"cs", r.cs}, {"mono_cd", r.mono_cd}, {"mono_cs", r.mono_cs},
                                         {"rs", r.rs}, {"rd_renderer", r.rd_renderer}, {"cs_renderer", r.cs_renderer},
-                                        {"error_mono", r.error_mono}, {"error_rgb", r.error_rgb}, {"seconds", seconds}}
+                                        {"error_mono", r.error_mono}, {"error_rgb", r.error_rgb}, {"seconds", seconds},
+                                        {"solver", r.solver}, {"stop_reason", r.stop_reason}, {"converged", r.converged},
+                                        {"weighted_cost", r.cost}, {"optimum_cost", r.optimum_cost}, {"warnings", r.warnings}}
                              .dump()
                       << "\n";
         } else {
-            std::printf("%s: %d directions inside %.0f deg, %d iterations (%d steps accepted), %.2f s\n", o->data.c_str(), r.samples_used,
-                        o->fit.limit_deg, o->fit.iterations, r.stage1.accepted, seconds);
-            std::printf("stage 1 (mean of RGB): ns %.4f  cd %.6f  cs %.6f  e %.6g\n", r.ns, r.mono_cd, r.mono_cs, r.error_mono);
-            std::printf("stage 2 (per channel): cd %.6f %.6f %.6f  cs %.6f %.6f %.6f  e %.6g\n", r.cd[0], r.cd[1], r.cd[2], r.cs[0],
-                        r.cs[1], r.cs[2], r.error_rgb);
+            std::printf("%s: %d directions inside %.0f deg, solver %s (%s), %.2f s\n", o->data.c_str(), r.samples_used, o->fit.limit_deg,
+                        r.solver.c_str(), r.stop_reason.c_str(), seconds);
+            if (r.solver == "thesis")
+                std::printf("stage 1 (mean of RGB): ns %.4f  cd %.6f  cs %.6f  e %.6g\n", r.ns, r.mono_cd, r.mono_cs, r.error_mono);
+            std::printf("%s: ns %.4f  cd %.6f %.6f %.6f  cs %.6f %.6f %.6f  e %.6g\n", r.solver == "thesis" ? "stage 2 (per channel)" : "fit",
+                        r.ns, r.cd[0], r.cd[1], r.cd[2], r.cs[0], r.cs[1], r.cs[2], r.error_rgb);
+            std::printf("weighted cost %.6g (optimum %.6g)%s\n", r.cost, r.optimum_cost, r.converged ? "" : "  NOT CONVERGED");
             std::printf("renderer form: Rs %.6f  Rd %.6f %.6f %.6f  cs' %.6f %.6f %.6f\n", r.rs, r.rd_renderer[0], r.rd_renderer[1],
                         r.rd_renderer[2], r.cs_renderer[0], r.cs_renderer[1], r.cs_renderer[2]);
         }
+        for (const std::string& warning : r.warnings) std::fprintf(stderr, "fxview fit: warning: %s\n", warning.c_str());
         return 0;
     };
 }

@@ -3,9 +3,13 @@
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
 #include <numbers>
 
 #include "core/error.hpp"
+#include "fit/bounded_levenberg_marquardt.hpp"
 
 namespace fxview::fit {
 namespace {
@@ -82,22 +86,179 @@ double error_number(const BrdfGrid& grid, const std::vector<Sample>& samples, in
     return sum;
 }
 
-}  // namespace
-
-double ashikhmin_lobe(const glm::dvec3& l, const glm::dvec3& v, double ns) {
-    const glm::dvec3 h = glm::normalize(l + v);
-    const double n_dot_h = std::max(h.z, 1e-4);
-    return (ns + 1.0) / (8.0 * kPi) * std::pow(n_dot_h, ns) / (glm::dot(h, v) * std::max(l.z, v.z));
+// The weighted RGB cost, from explicit residuals.
+double weighted_cost(const BrdfGrid& grid, const std::vector<Sample>& samples, double ns, const std::array<double, 3>& cd,
+                     const std::array<double, 3>& cs) {
+    double sum = 0;
+    for (const Sample& s : samples) {
+        const double lobe = ashikhmin_lobe(s.l, s.v, ns);
+        for (size_t c = 0; c < 3; ++c) {
+            const double r = s.weight * (grid.values[s.value_index][c] - (cd[c] / kPi + cs[c] * lobe));
+            sum += r * r;
+        }
+    }
+    return sum;
 }
 
-FitResult fit_ashikhmin_shirley(const BrdfGrid& measured, const FitOptions& options) {
-    if (options.limit_deg <= 0 || options.limit_deg > 90) throw UsageError("fit: the limit angle must lie in (0, 90] degrees");
-    if (options.iterations < 1) throw UsageError("fit: at least one iteration");
-    const std::vector<Sample> samples = samples_inside(measured, options.limit_deg);
-    if (samples.size() < 3) throw Error("fit: fewer than 3 samples inside the limit angle");
+// The global solver. The lobe at sample j is (ns + 1) g_j (n·h_j)^ns: g_j and ln(n·h_j) are kept so
+// that a new ns costs one exp per sample.
+class GlobalFit {
+public:
+    GlobalFit(const BrdfGrid& grid, const std::vector<Sample>& samples) : grid_(grid), samples_(samples) {
+        for (const Sample& s : samples) {
+            const glm::dvec3 h = glm::normalize(s.l + s.v);
+            log_n_dot_h_.push_back(std::log(std::max(h.z, 1e-4)));
+            geometry_.push_back(1.0 / (8.0 * kPi * glm::dot(h, s.v) * std::max(s.l.z, s.v.z)));
+        }
+    }
 
-    FitResult result;
-    result.samples_used = static_cast<int>(samples.size());
+    double lobe(size_t j, double ns) const { return (ns + 1.0) * geometry_[j] * std::exp(ns * log_n_dot_h_[j]); }
+
+    struct Scales {
+        std::array<double, 3> cd{}, cs{};
+        double cost = 0;  // from the normal equations (for the search; the final cost is recomputed)
+    };
+
+    // For a fixed ns, per channel: min over cd >= 0, 0 <= cs <= 1 of the quadratic
+    // q = yy − 2 cd bd − 2 cs bs + A cd² + 2 B cd cs + C cs². Convex over a box: the optimum is the
+    // unconstrained one if feasible, else the best of the edges' own minima.
+    Scales best_scales(double ns) const {
+        double a = 0, b = 0, c = 0;
+        std::array<double, 3> bd{}, bs{}, yy{};
+        for (size_t j = 0; j < samples_.size(); ++j) {
+            const double w2 = samples_[j].weight * samples_[j].weight, l = lobe(j, ns);
+            a += w2 / (kPi * kPi);
+            b += w2 * l / kPi;
+            c += w2 * l * l;
+            const auto& y = grid_.values[samples_[j].value_index];
+            for (size_t k = 0; k < 3; ++k) {
+                bd[k] += w2 * y[k] / kPi;
+                bs[k] += w2 * y[k] * l;
+                yy[k] += w2 * y[k] * y[k];
+            }
+        }
+        Scales out;
+        for (size_t k = 0; k < 3; ++k) {
+            const auto q = [&](double d, double s) { return yy[k] - 2 * d * bd[k] - 2 * s * bs[k] + a * d * d + 2 * b * d * s + c * s * s; };
+            double best = q(0, 0), best_d = 0, best_s = 0;
+            const auto consider = [&](double d, double s) {
+                if (!(d >= 0 && s >= 0 && s <= 1)) return;
+                const double value = q(d, s);
+                if (value < best) {
+                    best = value;
+                    best_d = d;
+                    best_s = s;
+                }
+            };
+            const double det = a * c - b * b;
+            if (det > 1e-14 * a * c) consider((bd[k] * c - bs[k] * b) / det, (bs[k] * a - bd[k] * b) / det);
+            if (c > 0) consider(0, std::clamp(bs[k] / c, 0.0, 1.0));
+            if (a > 0) consider(std::max(bd[k] / a, 0.0), 0);
+            if (a > 0) consider(std::max((bd[k] - b) / a, 0.0), 1);
+            out.cd[k] = best_d;
+            out.cs[k] = best_s;
+            out.cost += best;
+        }
+        return out;
+    }
+
+    // The exponent with the lowest profile cost: a log-spaced scan, then golden-section search
+    // between the best point's neighbours.
+    double search_exponent() const {
+        const double lo = std::log(kMinExponent), hi = std::log(kMaxExponent);
+        const int points = static_cast<int>(std::round(20 * std::log10(kMaxExponent / kMinExponent)));
+        const auto profile = [this](double log_ns) { return best_scales(std::exp(log_ns)).cost; };
+        int best = 0;
+        double best_cost = std::numeric_limits<double>::infinity();
+        for (int i = 0; i <= points; ++i) {
+            const double cost = profile(lo + (hi - lo) * i / points);
+            if (cost < best_cost) {
+                best_cost = cost;
+                best = i;
+            }
+        }
+        double from = lo + (hi - lo) * std::max(best - 1, 0) / points, to = lo + (hi - lo) * std::min(best + 1, points) / points;
+        const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
+        for (int i = 0; i < 80 && to - from > 1e-12; ++i) {
+            const double p = to - ratio * (to - from), q = from + ratio * (to - from);
+            if (profile(p) < profile(q)) to = q;
+            else from = p;
+        }
+        return std::exp(0.5 * (from + to));
+    }
+
+    // The polish's parameters: (ln ns, cd r g b, cs r g b); residuals w (y − f) for every sample and
+    // channel.
+    void residuals(const Eigen::VectorXd& p, Eigen::VectorXd& r) const {
+        const double ns = std::exp(p[0]);
+        r.resize(static_cast<Eigen::Index>(3 * samples_.size()));
+        for (size_t j = 0; j < samples_.size(); ++j) {
+            const double l = lobe(j, ns);
+            const auto& y = grid_.values[samples_[j].value_index];
+            for (size_t k = 0; k < 3; ++k)
+                r[static_cast<Eigen::Index>(3 * j + k)] =
+                    samples_[j].weight * (y[k] - (p[static_cast<Eigen::Index>(1 + k)] / kPi + p[static_cast<Eigen::Index>(4 + k)] * l));
+        }
+    }
+
+    void jacobian(const Eigen::VectorXd& p, Eigen::MatrixXd& d) const {
+        const double ns = std::exp(p[0]);
+        d.setZero(static_cast<Eigen::Index>(3 * samples_.size()), 7);
+        for (size_t j = 0; j < samples_.size(); ++j) {
+            const double l = lobe(j, ns), w = samples_[j].weight;
+            // ∂lobe/∂ln ns = ns ∂lobe/∂ns = lobe · ns (1/(ns + 1) + ln n·h)
+            const double d_lobe = l * ns * (1.0 / (ns + 1.0) + log_n_dot_h_[j]);
+            for (size_t k = 0; k < 3; ++k) {
+                const auto row = static_cast<Eigen::Index>(3 * j + k);
+                d(row, 0) = -w * p[static_cast<Eigen::Index>(4 + k)] * d_lobe;
+                d(row, static_cast<Eigen::Index>(1 + k)) = -w / kPi;
+                d(row, static_cast<Eigen::Index>(4 + k)) = -w * l;
+            }
+        }
+    }
+
+private:
+    const BrdfGrid& grid_;
+    const std::vector<Sample>& samples_;
+    std::vector<double> log_n_dot_h_, geometry_;
+};
+
+const char* kChannel[] = {"red", "green", "blue"};
+
+void run_global(const BrdfGrid& measured, const std::vector<Sample>& samples, FitResult& result) {
+    const GlobalFit problem(measured, samples);
+    const double ns = problem.search_exponent();
+    const GlobalFit::Scales scales = problem.best_scales(ns);
+    Eigen::VectorXd p(7), lower(7), upper(7);
+    p << std::log(ns), scales.cd[0], scales.cd[1], scales.cd[2], scales.cs[0], scales.cs[1], scales.cs[2];
+    lower << std::log(kMinExponent), 0, 0, 0, 0, 0, 0;
+    upper << std::log(kMaxExponent), 1e300, 1e300, 1e300, 1, 1, 1;
+    const BoundedReport polish = bounded_levenberg_marquardt(problem, p, lower, upper);
+    result.ns = std::exp(p[0]);
+    for (size_t k = 0; k < 3; ++k) {
+        result.cd[k] = p[static_cast<Eigen::Index>(1 + k)];
+        result.cs[k] = p[static_cast<Eigen::Index>(4 + k)];
+    }
+    result.solver = "global";
+    result.stop_reason = std::string("polish: ") + stop_reason_text(polish.reason) + " after " + std::to_string(polish.iterations) +
+                         " iterations";
+    result.converged = polish.converged();
+    if (!result.converged) result.warnings.push_back("the polish did not converge: " + std::string(stop_reason_text(polish.reason)));
+    if (polish.at_lower[0] || polish.at_upper[0])
+        result.warnings.push_back("ns is at the end of its search range (" + std::to_string(result.ns) +
+                                  "): the data have no lobe this model can describe");
+    for (size_t k = 0; k < 3; ++k) {
+        if (polish.at_lower[1 + k]) result.warnings.push_back(std::string("cd (") + kChannel[k] + ") is at its bound 0");
+        if (polish.at_lower[4 + k]) result.warnings.push_back(std::string("cs (") + kChannel[k] + ") is at its bound 0: no specular lobe");
+        if (polish.at_upper[4 + k])
+            result.warnings.push_back(std::string("cs (") + kChannel[k] + ") is at its bound 1: the renderer form's Rs = 1 leaves no diffuse part");
+    }
+    for (const double cost : polish.cost_per_iteration) result.error_per_iteration.push_back(std::sqrt(cost));
+}
+
+// Seed 000's two stages: stage 1 fits (ns, cd, cs) to the mean of RGB by its Levenberg-Marquardt
+// schedule; stage 2 solves cd and cs per channel with ns fixed (eq. 4.27, 4.30), unbounded.
+void run_thesis(const BrdfGrid& measured, const std::vector<Sample>& samples, const FitOptions& options, FitResult& result) {
     MonochromeProblem problem{measured, samples};
     Eigen::VectorXd a(3);
     a << options.start_ns, options.start_cd, options.start_cs;
@@ -109,16 +270,16 @@ FitResult fit_ashikhmin_shirley(const BrdfGrid& measured, const FitOptions& opti
     result.ns = a[0];
     result.mono_cd = a[1];
     result.mono_cs = a[2];
-    result.error_mono = std::sqrt(error_number(measured, samples, -1, a[0], a[1], a[2]));
+    result.solver = "thesis";
+    result.stop_reason = "stage 1: " + std::to_string(options.iterations) + " iterations (" + std::to_string(result.stage1.accepted) +
+                         " steps accepted), the thesis' only stop rule";
 
-    // Stage 2 (eq. 4.27, 4.30): with ns fixed the model is linear in (cd, cs); weighted least squares.
     Eigen::MatrixXd design(static_cast<Eigen::Index>(samples.size()), 2);
     for (size_t j = 0; j < samples.size(); ++j) {
         design(static_cast<Eigen::Index>(j), 0) = samples[j].weight / kPi;
         design(static_cast<Eigen::Index>(j), 1) = samples[j].weight * ashikhmin_lobe(samples[j].l, samples[j].v, result.ns);
     }
     const auto qr = design.colPivHouseholderQr();
-    double rgb_sum = 0;
     for (int c = 0; c < 3; ++c) {
         Eigen::VectorXd target(static_cast<Eigen::Index>(samples.size()));
         for (size_t j = 0; j < samples.size(); ++j)
@@ -126,11 +287,72 @@ FitResult fit_ashikhmin_shirley(const BrdfGrid& measured, const FitOptions& opti
         const Eigen::VectorXd x = qr.solve(target);
         result.cd[static_cast<size_t>(c)] = x[0];
         result.cs[static_cast<size_t>(c)] = x[1];
-        rgb_sum += error_number(measured, samples, c, result.ns, x[0], x[1]);
     }
+    if (result.ns <= 0) result.warnings.push_back("ns <= 0: the model has no lobe (the thesis' solver is unbounded)");
+    for (size_t k = 0; k < 3; ++k) {
+        if (result.cd[k] < 0) result.warnings.push_back(std::string("cd (") + kChannel[k] + ") < 0: not a physical BRDF");
+        if (result.cs[k] < 0) result.warnings.push_back(std::string("cs (") + kChannel[k] + ") < 0: not a physical BRDF");
+    }
+}
+
+}  // namespace
+
+double ashikhmin_lobe(const glm::dvec3& l, const glm::dvec3& v, double ns) {
+    const glm::dvec3 h = glm::normalize(l + v);
+    const double n_dot_h = std::max(h.z, 1e-4);
+    return (ns + 1.0) / (8.0 * kPi) * std::pow(n_dot_h, ns) / (glm::dot(h, v) * std::max(l.z, v.z));
+}
+
+void validate(const FitOptions& options) {
+    if (!(options.limit_deg > 0 && options.limit_deg <= 90)) throw UsageError("fit: the limit angle must lie in (0, 90] degrees");
+    if (options.iterations < 1) throw UsageError("fit: at least one iteration");
+    if (!(std::isfinite(options.start_ns) && options.start_ns > 0))
+        throw UsageError("fit: the start exponent ns must be a positive number, not " + std::to_string(options.start_ns));
+    if (!(std::isfinite(options.start_cd) && options.start_cd >= 0))
+        throw UsageError("fit: the start cd must be a number >= 0, not " + std::to_string(options.start_cd));
+    if (!(std::isfinite(options.start_cs) && options.start_cs >= 0))
+        throw UsageError("fit: the start cs must be a number >= 0, not " + std::to_string(options.start_cs));
+}
+
+FitResult fit_ashikhmin_shirley(const BrdfGrid& measured, const FitOptions& options) {
+    validate(options);
+    const std::vector<Sample> samples = samples_inside(measured, options.limit_deg);
+    if (samples.size() < 3) throw Error("fit: fewer than 3 samples inside the limit angle");
+
+    FitResult result;
+    result.samples_used = static_cast<int>(samples.size());
+    if (options.solver == Solver::Global) {
+        run_global(measured, samples, result);
+        result.mono_cd = (result.cd[0] + result.cd[1] + result.cd[2]) / 3.0;
+        result.mono_cs = (result.cs[0] + result.cs[1] + result.cs[2]) / 3.0;
+    } else {
+        run_thesis(measured, samples, options, result);
+    }
+    result.error_mono = std::sqrt(error_number(measured, samples, -1, result.ns, result.mono_cd, result.mono_cs));
+    double rgb_sum = 0;
+    for (int c = 0; c < 3; ++c)
+        rgb_sum += error_number(measured, samples, c, result.ns, result.cd[static_cast<size_t>(c)], result.cs[static_cast<size_t>(c)]);
     result.error_rgb = std::sqrt(rgb_sum);
+    result.cost = weighted_cost(measured, samples, result.ns, result.cd, result.cs);
+    if (options.solver == Solver::Global) {
+        result.optimum_cost = result.cost;
+    } else {
+        // What the thesis' schedule reached, against the global optimum of the same problem.
+        FitResult best;
+        run_global(measured, samples, best);
+        result.optimum_cost = weighted_cost(measured, samples, best.ns, best.cd, best.cs);
+        if (result.cost > 1.001 * result.optimum_cost + 1e-300) {
+            result.converged = false;
+            char text[256];
+            std::snprintf(text, sizeof text,
+                          "the thesis' schedule stopped at a weighted cost %.3gx the optimum (the default solver finds ns %.4g)",
+                          result.cost / std::max(result.optimum_cost, 1e-300), best.ns);
+            result.warnings.push_back(text);
+        }
+    }
 
     result.rs = std::max({result.cs[0], result.cs[1], result.cs[2]});
+    if (result.rs >= 1) result.warnings.push_back("Rs = max(cs) >= 1: the renderer form (eq. 4.23) has no diffuse part");
     for (size_t c = 0; c < 3; ++c) {
         result.cs_renderer[c] = result.rs > 0 ? result.cs[c] / result.rs : 0.0;
         result.rd_renderer[c] = result.rs < 1 ? result.cd[c] / (1.0 - result.rs) : 0.0;

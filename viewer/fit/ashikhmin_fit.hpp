@@ -13,11 +13,25 @@
 
 namespace fxview::fit {
 
+// global: the default. The model is linear in cd and cs, so for each ns the best scales per channel
+//   are a bounded linear least-squares problem solved exactly (cd >= 0, 0 <= cs <= 1, the renderer
+//   form's Rs <= 1); ns is searched over its whole range on a log scale (20 points per decade from
+//   1e-2 to 1e6), refined by golden-section search, and everything is polished together by a bounded
+//   Levenberg-Marquardt (bounded_levenberg_marquardt.hpp). It reaches the global optimum of the
+//   weighted RGB cost and reports why it stopped and which parameters sit at a bound.
+// thesis: seed 000's two stages with its λ schedule, as its figures were made; reported against the
+//   global optimum, so that a stall is never silent.
+enum class Solver { Global, Thesis };
+
 struct FitOptions {
     double limit_deg = 75.0;  // θi and θo beyond it are left out (0..90 in 5° steps in the thesis)
-    int iterations = 500;
-    double start_ns = 25.0, start_cd = 0.2, start_cs = 0.2;
+    int iterations = 500;     // the thesis solver's stage-1 iterations
+    double start_ns = 25.0, start_cd = 0.2, start_cs = 0.2;  // the thesis solver's start
+    Solver solver = Solver::Global;
 };
+
+// The search range of ns (the global solver's bounds).
+constexpr double kMinExponent = 1e-2, kMaxExponent = 1e6;
 
 struct FitResult {
     double ns = 0;
@@ -30,8 +44,20 @@ struct FitResult {
     double error_mono = 0, error_rgb = 0;  // e = sqrt(Σ(f − y)²) over the samples used, unweighted (eq. 4.1)
     std::vector<double> error_per_iteration;  // stage 1's e after each iteration (fig. 5.2)
     int samples_used = 0;  // directions inside the limit
-    LevenbergMarquardtReport stage1;
+    LevenbergMarquardtReport stage1;  // the thesis solver's stage 1
+
+    // The problem both solvers solve: the weighted RGB cost Σ_c Σ_j (w_j (y_jc − f_jc))² (eq. 4.27).
+    double cost = 0;
+    double optimum_cost = 0;  // the global search's cost (for the thesis solver: what it could have reached)
+    std::string solver;       // "global" or "thesis"
+    std::string stop_reason;  // why the last stage stopped
+    bool converged = true;
+    std::vector<std::string> warnings;  // parameters at a bound, a stall, a model outside its assumptions
 };
+
+// Validates the options as a user gave them (non-finite or negative starts, limit outside (0, 90]):
+// UsageError.
+void validate(const FitOptions& options);
 
 // The specular lobe of eq. 4.28 without cs: (ns + 1)/(8π) (n·h)^ns / ((h·v) max(n·l, n·v)), n = +z,
 // with n·h clamped to 1e-4 (ch. 4.2.4) so that its logarithm exists.

@@ -1,5 +1,7 @@
 #include "reference/reference.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "core/error.hpp"
@@ -63,6 +65,21 @@ glm::ivec3 ReferenceContext::texture_size(const std::string& sampler) const {
 CubeSample ReferenceContext::sample_cube(const std::string& sampler, glm::dvec3 direction) const {
     const SamplerData d = sampler_data(*this, sampler);
     return reference::sample_cube(*d.data, d.sampler->sampler, d.resource->srgb, direction);
+}
+
+double normal_sensitivity(const Shader& shade, const ShadingInput& in, const ReferenceContext& c, double angle) {
+    const glm::dvec3 n = glm::normalize(in.normal);
+    const glm::dvec3 helper = std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    const glm::dvec3 a = glm::normalize(glm::cross(n, helper)), b = glm::cross(n, a);
+    const std::array<double, 4> at = shade(in, c);
+    double change = 0;
+    for (const glm::dvec3& across : {a, -a, b, -b}) {
+        ShadingInput turned = in;
+        turned.normal = glm::normalize(n + angle * across);
+        const std::array<double, 4> moved = shade(turned, c);
+        for (size_t i = 0; i < 3; ++i) change = std::max(change, std::abs(moved[i] - at[i]));
+    }
+    return change;
 }
 
 const Reference* find_reference(const std::string& effect_stem, const std::string& technique) {

@@ -58,6 +58,12 @@ struct Reference {
     std::function<double(const ShadingInput&, const ReferenceContext&)> slack;
 };
 
+// The largest change of any colour channel when the pixel's normal turns by `angle` (radians) in
+// either of two directions across it: the GPU's normalised normal and the cosines formed from it
+// carry a few ulps of rounding (~3e-7), which a steep highlight (pow of a cosine to a high power)
+// amplifies. A slack for references whose value is steep in the angles.
+double normal_sensitivity(const Shader& shade, const ShadingInput& in, const ReferenceContext& c, double angle = 1e-6);
+
 // The reference for technique `technique` of the effect file named `effect_stem` (file name without
 // extension), or nullptr if there is none.
 const Reference* find_reference(const std::string& effect_stem, const std::string& technique);

@@ -86,14 +86,17 @@ std::array<double, 4> film_colour(const Film& f, const ReferenceContext& c, cons
 
 // The phase's float rounding is independent from wavelength to wavelength, so the colour error
 // averages over the samples. A light that puts its power into few wavelengths (a fluorescent line
-// spectrum, summed at its 5 nm lines) averages over fewer: the bound grows with the square root of
-// the drop in the effective number of samples (Σw)²/Σw², w = light x CMF, against an equal-energy light.
+// spectrum, summed at its 5 nm lines), a narrow range or coarse steps average over fewer: the bound
+// grows with the square root of the drop in the effective number of samples (Σw)²/Σw², w = light x
+// CMF, against an equal-energy light over the default range.
 double averaging_factor(const ReferenceContext& c) {
     const SpectralSetup s = spectral_setup(c);
     const int light = static_cast<int>(c.number("LightSpectrum"));
+    // The equal-energy light over the default range (360-830 nm every nm), where the bound was measured.
     const auto effective_samples = [&](bool flat) {
         double sum = 0, squares = 0;
-        for (int nm = s.lower; nm <= s.upper; nm += s.steps) {
+        const int lower = flat ? 360 : s.lower, upper = flat ? 830 : s.upper, steps = flat ? 1 : s.steps;
+        for (int nm = lower; nm <= upper; nm += steps) {
             const spectral::Vec3 cmf = spectral::cmf_value(*s.cmf, s.observer, nm);
             const double w = (flat ? 1.0 : spectral::packed_value(*s.spectra, light, nm)) * (cmf[0] + cmf[1] + cmf[2]);
             sum += w;
@@ -104,14 +107,44 @@ double averaging_factor(const ReferenceContext& c) {
     return std::max(1.0, std::sqrt(effective_samples(true) / effective_samples(false)));
 }
 
-Reference make(Reflectance reflectance, double tolerance, std::string why) {
+using FilmAt = Film (*)(const ShadingInput&, const ReferenceContext&);
+
+// The GPU forms each phase (4π n d cos θ / λ per layer) and cosine in float: ~1e-6 relative of a
+// phase after the handful of operations that form it, ~5e-7 absolute in the cosines. Where the
+// reflectance is steep in them (a multilayer's resonances, a single sampled wavelength, the finesse
+// near grazing incidence) that moves the colour by more than the averaged bound: the slack is the
+// largest colour change when every thickness scales by 1 ± 1e-6 or the cosines move by ± 5e-7.
+double phase_sensitivity(const Film& at, const ReferenceContext& c, const Reflectance& reflectance) {
+    const std::array<double, 4> base = film_colour(at, c, reflectance);
+    double change = 0;
+    const auto compare = [&](const Film& f) {
+        const std::array<double, 4> moved = film_colour(f, c, reflectance);
+        for (size_t i = 0; i < 3; ++i) change = std::max(change, std::abs(moved[i] - base[i]));
+    };
+    for (const double sign : {-1.0, 1.0}) {
+        Film thicker = at;
+        thicker.thickness *= 1.0 + sign * 1e-6;
+        for (optics::Layer& layer : thicker.stack.layers) layer.thickness_nm *= 1.0 + sign * 1e-6;
+        compare(thicker);
+        Film turned = at;
+        for (double* cosine : {&turned.cos0, &turned.cos_light, &turned.cos_view}) *cosine = std::clamp(*cosine + sign * 5e-7, 0.0, 1.0);
+        compare(turned);
+    }
+    return change;
+}
+
+Reference make(Reflectance reflectance, double tolerance, std::string why, FilmAt film_at = film) {
     Reference r;
-    r.shade = [reflectance](const ShadingInput& in, const ReferenceContext& c) { return film_colour(film(in, c), c, reflectance); };
+    r.shade = [reflectance, film_at](const ShadingInput& in, const ReferenceContext& c) { return film_colour(film_at(in, c), c, reflectance); };
+    r.slack = [reflectance, film_at](const ShadingInput& in, const ReferenceContext& c) {
+        return phase_sensitivity(film_at(in, c), c, reflectance);
+    };
     r.tolerance = tolerance;
     // Measured at the default Brightness 2 with automatic k; a brighter output scales the error alike.
     r.tolerance_for = [tolerance](const ReferenceContext& c) { return tolerance * averaging_factor(c) * output_gain(spectral_setup(c), 2.0); };
-    r.why = std::move(why) + "; scaled by sqrt(effective samples of an equal-energy light / of the light) (1 for smooth lights) "
-                             "and by the output's gain over Brightness 2 with automatic k";
+    r.why = std::move(why) + "; scaled by sqrt(effective samples of an equal-energy light over 360-830 nm / of the light over "
+                             "the range used) and by the output's gain over Brightness 2 with automatic k; slack: the colour change "
+                             "when thicknesses scale by 1 +- 1e-6 or the cosines move by +- 5e-7 (float phases and angles)";
     return r;
 }
 
@@ -148,7 +181,9 @@ std::map<std::string, Reference> thin_film_references() {
     Reference path = make([](const Film& f, double nm) {
         return optics::thesis::path_difference(f.n0, f.n1, f.thickness, nm, f.cos_light, f.cos_view).intensity;
     }, 5e-5, std::string(kPhaseWhy) + "; pixels where a wavelength sits on frac()'s jump get that wavelength's share as slack");
-    path.slack = path_difference_slack;
+    path.slack = [phase = path.slack](const ShadingInput& in, const ReferenceContext& c) {
+        return phase(in, c) + path_difference_slack(in, c);
+    };
     all.emplace("PathDifference", std::move(path));
 
     const Reflectance durikovic = [](const Film& f, double nm) { return optics::thesis::durikovic(f.n0, f.n1, f.n2, f.thickness, nm, f.cos0); };
@@ -167,12 +202,11 @@ std::map<std::string, Reference> thin_film_references() {
     };
     all.emplace("FresnelExact", make(single_film, 5e-5, kPhaseWhy));
     // Bump mapping (eq. 69): the same film under a wave-tilted normal, thickened at the crests.
-    Reference bump = make(single_film, 5e-5, kPhaseWhy);
-    bump.shade = [single_film](const ShadingInput& in, const ReferenceContext& c) { return film_colour(bumped_film(in, c), c, single_film); };
+    Reference bump = make(single_film, 5e-5, kPhaseWhy, bumped_film);
     // The GPU reduces the wave's phase f·uv to one period in float; its rounding (an ulp of f·u, 1e-6
     // at 13.5 waves) moves slope and thickness, by an amount that grows with the waves' steepness
     // (slope A·2πf reaches 40). The slack is the colour change that shifting u or v by that much causes.
-    bump.slack = [single_film](const ShadingInput& in, const ReferenceContext& c) {
+    bump.slack = [single_film, phase = bump.slack](const ShadingInput& in, const ReferenceContext& c) {
         const double frequency = c.number("WaveFrequency");
         const std::array<double, 4> at = film_colour(bumped_film(in, c), c, single_film);
         double slack = 0;
@@ -186,7 +220,7 @@ std::map<std::string, Reference> thin_film_references() {
                 for (int i = 0; i < 3; ++i) slack = std::max(slack, std::abs(shifted[static_cast<size_t>(i)] - at[static_cast<size_t>(i)]));
             }
         }
-        return slack;
+        return slack + phase(in, c);
     };
     all.emplace("BumpFresnelExact", std::move(bump));
     all.emplace("Bubble", make([](const Film& f, double nm) {

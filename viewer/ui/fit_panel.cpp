@@ -3,6 +3,9 @@
 #include <glad/gl.h>
 #include <imgui.h>
 
+#include <algorithm>
+#include <cmath>
+#include <string>
 #include <vector>
 
 #include "app/fit_preview.hpp"
@@ -69,21 +72,37 @@ void draw_fit_panel(FitPanelState& state, render::EffectSession* session) {
     ImGui::InputText("File", state.path, sizeof state.path);
     float limit = static_cast<float>(state.options.limit_deg);
     if (ImGui::SliderFloat("Limit angle", &limit, 5.0f, 90.0f, "%.0f deg")) state.options.limit_deg = limit;
-    ImGui::SliderInt("Iterations", &state.options.iterations, 1, 2000);
-    float start_ns = static_cast<float>(state.options.start_ns);
-    if (ImGui::DragFloat("Start ns", &start_ns, 1.0f, 1.0f, 10000.0f)) state.options.start_ns = start_ns;
+    int solver = state.options.solver == fit::Solver::Thesis ? 1 : 0;
+    if (ImGui::Combo("Solver", &solver, "Global optimum (bounded)\0Thesis (seed 000's schedule)\0"))
+        state.options.solver = solver == 1 ? fit::Solver::Thesis : fit::Solver::Global;
+    if (state.options.solver == fit::Solver::Thesis) {
+        ImGui::SliderInt("Iterations", &state.options.iterations, 1, 2000);
+        float start_ns = static_cast<float>(state.options.start_ns);
+        if (ImGui::DragFloat("Start ns", &start_ns, 1.0f, 1.0f, 10000.0f)) state.options.start_ns = start_ns;
+    }
     if (ImGui::Button("Fit")) run_fit(state, session);
     if (!state.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "%s", state.error.c_str());
     if (!state.result) return;
     const fit::FitResult& r = *state.result;
     ImGui::Separator();
+    if (r.converged) ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "Converged (%s solver)", r.solver.c_str());
+    else ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "NOT converged (%s solver)", r.solver.c_str());
+    ImGui::TextWrapped("%s", r.stop_reason.c_str());
+    for (const std::string& warning : r.warnings) ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", warning.c_str());
+    ImGui::Text("weighted cost %.5g (optimum %.5g)", r.cost, r.optimum_cost);
     ImGui::Text("ns %.3f   e (RGB) %.5g", r.ns, r.error_rgb);
     ImGui::Text("cd %.4f %.4f %.4f", r.cd[0], r.cd[1], r.cd[2]);
     ImGui::Text("cs %.4f %.4f %.4f", r.cs[0], r.cs[1], r.cs[2]);
     ImGui::Text("renderer: Rs %.4f  Rd %.4f %.4f %.4f", r.rs, r.rd_renderer[0], r.rd_renderer[1], r.rd_renderer[2]);
-    std::vector<float> curve(r.error_per_iteration.begin(), r.error_per_iteration.end());
-    if (!curve.empty())
-        ImGui::PlotLines("e per iteration", curve.data(), static_cast<int>(curve.size()), 0, nullptr, FLT_MAX, FLT_MAX, ImVec2(0, 80));
+    // On a log axis: the error falls over decades; labelled with its range.
+    std::vector<float> curve;
+    for (const double e : r.error_per_iteration) curve.push_back(static_cast<float>(std::log10(std::max(e, 1e-300))));
+    if (!curve.empty()) {
+        const auto [low, high] = std::minmax_element(curve.begin(), curve.end());
+        const std::string overlay = "e from 10^" + std::to_string(*high).substr(0, 5) + " to 10^" + std::to_string(*low).substr(0, 5);
+        ImGui::PlotLines("log10 e per iteration", curve.data(), static_cast<int>(curve.size()), 0, overlay.c_str(), FLT_MAX, FLT_MAX,
+                         ImVec2(0, 80));
+    }
     if (state.preview.get() != 0) {
         ImGui::TextDisabled("measured | model | difference (x%.0f); rows: theta_in blocks, theta_out; columns: phi_out", state.preview_brighten);
         // Fit the image to the panel's width, keeping its aspect.

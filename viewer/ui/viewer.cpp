@@ -832,7 +832,8 @@ private:
             if (!run_fit(fit_panel_, session_.get())) throw Error(fit_panel_.error);
             const fit::FitResult& r = *fit_panel_.result;
             for (auto& o : objects_) o.technique = session_ ? session_->technique() : o.technique;
-            std::cout << nlohmann::json{{"fit", {{"ns", r.ns}, {"cd", r.cd}, {"cs", r.cs}, {"error_rgb", r.error_rgb}}}}.dump() << std::endl;
+            std::cout << nlohmann::json{{"fit", {{"ns", r.ns}, {"cd", r.cd}, {"cs", r.cs}, {"error_rgb", r.error_rgb}, {"converged", r.converged},
+                                                    {"warnings", r.warnings}}}}.dump() << std::endl;
         } else if (a.verb == "allow-path") {
             allow_folder(args[0]);
         } else if (a.verb == "frames") {
