@@ -148,9 +148,10 @@ GLSLShader FresnelAlternativeFS {
         Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
         float cos1 = refracted_cos(OuterIndex, FilmIndex, f.cos0);
         float cos2 = refracted_cos(OuterIndex, SubstrateIndex, f.cos0);
-        float sin0 = sqrt(max(1.0 - f.cos0 * f.cos0, 0.0));
-        float tan1 = sqrt(max(1.0 - cos1 * cos1, 0.0)) / cos1;
-        float path = kTwoPi * (2.0 * f.thickness * FilmIndex / cos1 - 2.0 * f.thickness * OuterIndex * tan1 * sin0);
+        // Eq. 64's path in the film minus the path outside, 2dn1/cos1 - 2dn0 tan1 sin0, is by Snell
+        // exactly 2dn1 cos1; written so, it does not lose the phase to cancellation near grazing
+        // incidence in float (thick films, n1 = n0).
+        float path = kTwoPi * 2.0 * f.thickness * FilmIndex * cos1;
         vec2 r01 = fresnel_combined(f.cos0, cos1, OuterIndex, FilmIndex);
         vec2 r10 = fresnel_combined(cos1, f.cos0, FilmIndex, OuterIndex);
         vec2 r12 = fresnel_combined(cos1, cos2, FilmIndex, SubstrateIndex);

@@ -109,6 +109,7 @@ CommandRunner add_compare_command(CLI::App& app) {
                                 {"pixels_within_slack", r.pixels_within_slack},
                                 {"tolerance", r.tolerance},
                                 {"tolerance_reason", r.tolerance_reason}});
+                    if (r.pixels == 0) out["error"] = "the mesh covers no pixel: nothing was compared";
                 } else {
                     out["error"] = "no CPU reference for this technique";
                 }
@@ -119,6 +120,7 @@ CommandRunner add_compare_command(CLI::App& app) {
                 std::printf("%-20s %s  pixels %ld  max %.3g  mean %.3g  8-bit mismatches %ld  tolerance %.3g", r.technique.c_str(),
                             r.pass ? "pass" : "FAIL", r.pixels, r.max_abs_error, r.mean_abs_error, r.mismatched_8bit, r.tolerance);
                 if (r.pixels_within_slack > 0) std::printf("  (%ld pixels within their slack)", r.pixels_within_slack);
+                if (r.pixels == 0) std::printf("  - the mesh covers no pixel: nothing was compared (check the camera and mesh)");
                 std::printf("\n");
             }
         }

@@ -148,9 +148,10 @@ CommandRunner add_fit_command(CLI::App& app) {
     return [o] {
         o->fit.solver = o->solver == "thesis" ? fit::Solver::Thesis : fit::Solver::Global;
         fit::validate(o->fit);  // before reading the data: a bad start is a usage error (exit 2)
-        const fit::BrdfGrid measured = fit::read_measurement(o->data);
+        const fit::Measurement measurement = fit::read_measurement_for_fit(o->data);
+        const fit::BrdfGrid& measured = measurement.grid;
         const auto start = std::chrono::steady_clock::now();
-        const fit::FitResult r = fit::fit_ashikhmin_shirley(measured, o->fit);
+        const fit::FitResult r = fit::fit_ashikhmin_shirley(fit::observations(measurement, o->fit.limit_deg), o->fit);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (!o->out.empty()) write_result_csv(r, o->out);
         if (!o->preset.empty()) write_preset(r, o->preset);
@@ -166,7 +167,7 @@ CommandRunner add_fit_command(CLI::App& app) {
             if (!out) throw Error(o->progress + ": cannot write");
         }
         if (o->json) {
-            std::cout << nlohmann::json{{"data", o->data}, {"samples_used", r.samples_used}, {"limit_deg", o->fit.limit_deg},
+            std::cout << nlohmann::json{{"data", o->data}, {"samples_used", r.samples_used}, {"samples_masked", r.samples_masked}, {"limit_deg", o->fit.limit_deg},
                                         {"iterations", o->fit.iterations}, {"accepted_steps", r.stage1.accepted},
                                         {"ns", r.ns}, {"cd", r.cd}, {"cs", r.cs}, {"mono_cd", r.mono_cd}, {"mono_cs", r.mono_cs},
                                         {"rs", r.rs}, {"rd_renderer", r.rd_renderer}, {"cs_renderer", r.cs_renderer},
@@ -199,6 +200,7 @@ CommandRunner add_brdf_grid_command(CLI::App& app) {
         unsigned seed = 1;
         std::vector<int> samples{19, 37, 36};
         int digits = 17;
+        bool merl_out = false;
     };
     auto o = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("brdf-grid", "Tabulate an analytic BRDF on the thesis' measurement grid (synthetic data for fit)");
@@ -210,8 +212,23 @@ CommandRunner add_brdf_grid_command(CLI::App& app) {
     command->add_option("--samples", o->samples, "Samples of theta_in, theta_out (0..90) and phi_out (0..180); the thesis' 19 37 36")
         ->expected(3)->capture_default_str();
     command->add_option("--digits", o->digits, "Significant digits written (17 keeps doubles exact)")->capture_default_str()->check(CLI::Range(3, 17));
-    command->add_option("--out,-o", o->out, "CSV file")->required();
+    command->add_option("--out,-o", o->out, "CSV file, or with --merl-out nothing")->required();
+    command->add_flag("--merl-out", o->merl_out,
+                      "Write the model as a full-density MERL .binary file (90 x 90 x 180 bins, each at its centre) instead of a grid");
     return [o] {
+        if (o->merl_out) {
+            if (!o->merl.empty()) throw UsageError("brdf-grid: --merl-out tabulates a --model, not a --merl file");
+            fit::MerlBrdf merl = fit::tabulate_merl(analytic_model(o->model, o->params));
+            std::mt19937 random(o->seed);
+            std::normal_distribution<double> gauss(0.0, 1.0);
+            if (o->noise > 0)
+                for (double& v : merl.data)
+                    if (v > 0) v *= 1.0 + o->noise * gauss(random);
+            create_parent(o->out);
+            fit::write_merl(merl, o->out);
+            std::cout << "wrote " << o->out << " (MERL, 90 x 90 x 180 bins, model " << o->model << ")\n";
+            return 0;
+        }
         std::mt19937 random(o->seed);
         std::normal_distribution<double> gauss(0.0, 1.0);
         const fit::BrdfGrid shape = fit::uniform_grid(o->samples[0], o->samples[1], o->samples[2]);

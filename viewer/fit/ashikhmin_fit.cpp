@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "fit/bounded_levenberg_marquardt.hpp"
 
 namespace fxview::fit {
@@ -16,52 +17,25 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// One measured direction pair inside the limit, with its weight w·cos θi / Σw and the lobe's parts.
-struct Sample {
-    size_t value_index;
-    double weight;
-    glm::dvec3 l, v;
-};
-
-std::vector<Sample> samples_inside(const BrdfGrid& grid, double limit_deg) {
-    const std::vector<double> w = solid_angle_weights(grid, limit_deg);
-    double sum = 0;
-    for (double x : w) sum += x;
-    std::vector<Sample> samples;
-    for (size_t i = 0; i < grid.theta_in.size(); ++i) {
-        const glm::dvec3 l = grid.light(i);
-        // Light at the horizon: weight cos θi = 0, and the lobe's max(n·l, n·v) may be 0 too (0 · ∞).
-        if (grid.theta_in[i] > limit_deg || l.z < 1e-9) continue;
-        for (size_t o = 0; o < grid.theta_out.size(); ++o)
-            for (size_t p = 0; p < grid.phi_out.size(); ++p) {
-                const double weight = w[o * grid.phi_out.size() + p];
-                if (weight <= 0) continue;
-                samples.push_back({grid.index(i, o, p), weight * l.z / sum, l, grid.camera(o, p)});
-            }
-    }
-    return samples;
-}
-
 double mono(const std::array<double, 3>& rgb) { return (rgb[0] + rgb[1] + rgb[2]) / 3.0; }
 
 // Stage 1 (eq. 4.26): parameters a = (ns, cd, cs) for the mean of the three channels.
 struct MonochromeProblem {
-    const BrdfGrid& grid;
-    const std::vector<Sample>& samples;
+    const std::vector<Observation>& samples;
 
-    double model(const Sample& s, const Eigen::VectorXd& a) const { return a[1] / kPi + a[2] * ashikhmin_lobe(s.l, s.v, a[0]); }
+    double model(const Observation& s, const Eigen::VectorXd& a) const { return a[1] / kPi + a[2] * ashikhmin_lobe(s.l, s.v, a[0]); }
 
     void residuals(const Eigen::VectorXd& a, Eigen::VectorXd& r) const {
         r.resize(static_cast<Eigen::Index>(samples.size()));
         for (size_t j = 0; j < samples.size(); ++j)
-            r[static_cast<Eigen::Index>(j)] = samples[j].weight * (mono(grid.values[samples[j].value_index]) - model(samples[j], a));
+            r[static_cast<Eigen::Index>(j)] = samples[j].weight * (mono(samples[j].value) - model(samples[j], a));
     }
 
     // Eq. 4.29 (with the weights, and the sign of r = w (R − M)).
     void jacobian(const Eigen::VectorXd& a, Eigen::MatrixXd& d) const {
         d.resize(static_cast<Eigen::Index>(samples.size()), 3);
         for (size_t j = 0; j < samples.size(); ++j) {
-            const Sample& s = samples[j];
+            const Observation& s = samples[j];
             const double lobe = ashikhmin_lobe(s.l, s.v, a[0]);
             const double n_dot_h = std::max(glm::normalize(s.l + s.v).z, 1e-4);
             // ∂/∂ns of (ns + 1)(n·h)^ns = (n·h)^ns (1 + (ns + 1) ln(n·h)); lobe carries (ns + 1)(n·h)^ns.
@@ -74,11 +48,11 @@ struct MonochromeProblem {
     }
 };
 
-double error_number(const BrdfGrid& grid, const std::vector<Sample>& samples, int channel /* -1: mean */, double ns, double cd,
+double error_number(const std::vector<Observation>& samples, int channel /* -1: mean */, double ns, double cd,
                     double cs) {
     double sum = 0;
-    for (const Sample& s : samples) {
-        const auto& y = grid.values[s.value_index];
+    for (const Observation& s : samples) {
+        const auto& y = s.value;
         const double measured = channel < 0 ? mono(y) : y[static_cast<size_t>(channel)];
         const double f = cd / kPi + cs * ashikhmin_lobe(s.l, s.v, ns);
         sum += (f - measured) * (f - measured);
@@ -87,13 +61,13 @@ double error_number(const BrdfGrid& grid, const std::vector<Sample>& samples, in
 }
 
 // The weighted RGB cost, from explicit residuals.
-double weighted_cost(const BrdfGrid& grid, const std::vector<Sample>& samples, double ns, const std::array<double, 3>& cd,
+double weighted_cost(const std::vector<Observation>& samples, double ns, const std::array<double, 3>& cd,
                      const std::array<double, 3>& cs) {
     double sum = 0;
-    for (const Sample& s : samples) {
+    for (const Observation& s : samples) {
         const double lobe = ashikhmin_lobe(s.l, s.v, ns);
         for (size_t c = 0; c < 3; ++c) {
-            const double r = s.weight * (grid.values[s.value_index][c] - (cd[c] / kPi + cs[c] * lobe));
+            const double r = s.weight * (s.value[c] - (cd[c] / kPi + cs[c] * lobe));
             sum += r * r;
         }
     }
@@ -104,8 +78,8 @@ double weighted_cost(const BrdfGrid& grid, const std::vector<Sample>& samples, d
 // that a new ns costs one exp per sample.
 class GlobalFit {
 public:
-    GlobalFit(const BrdfGrid& grid, const std::vector<Sample>& samples) : grid_(grid), samples_(samples) {
-        for (const Sample& s : samples) {
+    explicit GlobalFit(const std::vector<Observation>& samples) : samples_(samples) {
+        for (const Observation& s : samples) {
             const glm::dvec3 h = glm::normalize(s.l + s.v);
             log_n_dot_h_.push_back(std::log(std::max(h.z, 1e-4)));
             geometry_.push_back(1.0 / (8.0 * kPi * glm::dot(h, s.v) * std::max(s.l.z, s.v.z)));
@@ -122,21 +96,44 @@ public:
     // For a fixed ns, per channel: min over cd >= 0, 0 <= cs <= 1 of the quadratic
     // q = yy − 2 cd bd − 2 cs bs + A cd² + 2 B cd cs + C cs². Convex over a box: the optimum is the
     // unconstrained one if feasible, else the best of the edges' own minima.
-    Scales best_scales(double ns) const {
+    // Σ over the samples of the quadratic's coefficients (one pass, on every core).
+    struct Moments {
         double a = 0, b = 0, c = 0;
         std::array<double, 3> bd{}, bs{}, yy{};
-        for (size_t j = 0; j < samples_.size(); ++j) {
-            const double w2 = samples_[j].weight * samples_[j].weight, l = lobe(j, ns);
-            a += w2 / (kPi * kPi);
-            b += w2 * l / kPi;
-            c += w2 * l * l;
-            const auto& y = grid_.values[samples_[j].value_index];
+        Moments& operator+=(const Moments& o) {
+            a += o.a;
+            b += o.b;
+            c += o.c;
             for (size_t k = 0; k < 3; ++k) {
-                bd[k] += w2 * y[k] / kPi;
-                bs[k] += w2 * y[k] * l;
-                yy[k] += w2 * y[k] * y[k];
+                bd[k] += o.bd[k];
+                bs[k] += o.bs[k];
+                yy[k] += o.yy[k];
             }
+            return *this;
         }
+    };
+
+    Scales best_scales(double ns) const {
+        const Moments m = parallel_sum<Moments>(samples_.size(), [&](size_t begin, size_t end) {
+            Moments part;
+            for (size_t j = begin; j < end; ++j) {
+                const double w2 = samples_[j].weight * samples_[j].weight, l = lobe(j, ns);
+                part.a += w2 / (kPi * kPi);
+                part.b += w2 * l / kPi;
+                part.c += w2 * l * l;
+                const auto& y = samples_[j].value;
+                for (size_t k = 0; k < 3; ++k) {
+                    part.bd[k] += w2 * y[k] / kPi;
+                    part.bs[k] += w2 * y[k] * l;
+                    part.yy[k] += w2 * y[k] * y[k];
+                }
+            }
+            return part;
+        });
+        const double a = m.a, b = m.b, c = m.c;
+        const auto& bd = m.bd;
+        const auto& bs = m.bs;
+        const auto& yy = m.yy;
         Scales out;
         for (size_t k = 0; k < 3; ++k) {
             const auto q = [&](double d, double s) { return yy[k] - 2 * d * bd[k] - 2 * s * bs[k] + a * d * d + 2 * b * d * s + c * s * s; };
@@ -179,7 +176,7 @@ public:
         }
         double from = lo + (hi - lo) * std::max(best - 1, 0) / points, to = lo + (hi - lo) * std::min(best + 1, points) / points;
         const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
-        for (int i = 0; i < 80 && to - from > 1e-12; ++i) {
+        for (int i = 0; i < 50 && to - from > 1e-10; ++i) {
             const double p = to - ratio * (to - from), q = from + ratio * (to - from);
             if (profile(p) < profile(q)) to = q;
             else from = p;
@@ -187,46 +184,65 @@ public:
         return std::exp(0.5 * (from + to));
     }
 
-    // The polish's parameters: (ln ns, cd r g b, cs r g b); residuals w (y − f) for every sample and
-    // channel.
-    void residuals(const Eigen::VectorXd& p, Eigen::VectorXd& r) const {
-        const double ns = std::exp(p[0]);
-        r.resize(static_cast<Eigen::Index>(3 * samples_.size()));
-        for (size_t j = 0; j < samples_.size(); ++j) {
-            const double l = lobe(j, ns);
-            const auto& y = grid_.values[samples_[j].value_index];
-            for (size_t k = 0; k < 3; ++k)
-                r[static_cast<Eigen::Index>(3 * j + k)] =
-                    samples_[j].weight * (y[k] - (p[static_cast<Eigen::Index>(1 + k)] / kPi + p[static_cast<Eigen::Index>(4 + k)] * l));
+    // The polish's parameters p = (ln ns, cd r g b, cs r g b); residuals w (y − f) for every sample and
+    // channel, handed over as normal equations: a Jacobian of 3 × 1.1 million rows (a MERL file)
+    // would not fit in memory.
+    struct Normal {
+        double cost = 0;
+        Eigen::Matrix<double, 7, 7> jtj = Eigen::Matrix<double, 7, 7>::Zero();
+        Eigen::Matrix<double, 7, 1> jtr = Eigen::Matrix<double, 7, 1>::Zero();
+        Normal& operator+=(const Normal& o) {
+            cost += o.cost;
+            jtj += o.jtj;
+            jtr += o.jtr;
+            return *this;
         }
+    };
+
+    Normal accumulate(const Eigen::VectorXd& p, bool derivatives) const {
+        const double ns = std::exp(p[0]);
+        return parallel_sum<Normal>(samples_.size(), [&](size_t begin, size_t end) {
+            Normal part;
+            for (size_t j = begin; j < end; ++j) {
+                const double l = lobe(j, ns), w = samples_[j].weight;
+                // ∂lobe/∂ln ns = ns ∂lobe/∂ns = lobe · ns (1/(ns + 1) + ln n·h)
+                const double d_lobe = l * ns * (1.0 / (ns + 1.0) + log_n_dot_h_[j]);
+                for (size_t k = 0; k < 3; ++k) {
+                    const auto ki = static_cast<Eigen::Index>(k);
+                    const double r = w * (samples_[j].value[k] - (p[1 + ki] / kPi + p[4 + ki] * l));
+                    part.cost += r * r;
+                    if (!derivatives) continue;
+                    // The row's three non-zeros: ∂r/∂ln ns, ∂r/∂cd_k, ∂r/∂cs_k.
+                    const std::array<Eigen::Index, 3> column = {0, 1 + ki, 4 + ki};
+                    const std::array<double, 3> value = {-w * p[4 + ki] * d_lobe, -w / kPi, -w * l};
+                    for (size_t x = 0; x < 3; ++x) {
+                        part.jtr[column[x]] += value[x] * r;
+                        for (size_t y = 0; y < 3; ++y) part.jtj(column[x], column[y]) += value[x] * value[y];
+                    }
+                }
+            }
+            return part;
+        });
     }
 
-    void jacobian(const Eigen::VectorXd& p, Eigen::MatrixXd& d) const {
-        const double ns = std::exp(p[0]);
-        d.setZero(static_cast<Eigen::Index>(3 * samples_.size()), 7);
-        for (size_t j = 0; j < samples_.size(); ++j) {
-            const double l = lobe(j, ns), w = samples_[j].weight;
-            // ∂lobe/∂ln ns = ns ∂lobe/∂ns = lobe · ns (1/(ns + 1) + ln n·h)
-            const double d_lobe = l * ns * (1.0 / (ns + 1.0) + log_n_dot_h_[j]);
-            for (size_t k = 0; k < 3; ++k) {
-                const auto row = static_cast<Eigen::Index>(3 * j + k);
-                d(row, 0) = -w * p[static_cast<Eigen::Index>(4 + k)] * d_lobe;
-                d(row, static_cast<Eigen::Index>(1 + k)) = -w / kPi;
-                d(row, static_cast<Eigen::Index>(4 + k)) = -w * l;
-            }
-        }
+    double cost(const Eigen::VectorXd& p) const { return accumulate(p, false).cost; }
+
+    double normal_equations(const Eigen::VectorXd& p, Eigen::MatrixXd& jtj, Eigen::VectorXd& jtr) const {
+        const Normal n = accumulate(p, true);
+        jtj = n.jtj;
+        jtr = n.jtr;
+        return n.cost;
     }
 
 private:
-    const BrdfGrid& grid_;
-    const std::vector<Sample>& samples_;
+    const std::vector<Observation>& samples_;
     std::vector<double> log_n_dot_h_, geometry_;
 };
 
 const char* kChannel[] = {"red", "green", "blue"};
 
-void run_global(const BrdfGrid& measured, const std::vector<Sample>& samples, FitResult& result) {
-    const GlobalFit problem(measured, samples);
+void run_global(const std::vector<Observation>& samples, FitResult& result) {
+    const GlobalFit problem(samples);
     const double ns = problem.search_exponent();
     const GlobalFit::Scales scales = problem.best_scales(ns);
     Eigen::VectorXd p(7), lower(7), upper(7);
@@ -258,14 +274,14 @@ void run_global(const BrdfGrid& measured, const std::vector<Sample>& samples, Fi
 
 // Seed 000's two stages: stage 1 fits (ns, cd, cs) to the mean of RGB by its Levenberg-Marquardt
 // schedule; stage 2 solves cd and cs per channel with ns fixed (eq. 4.27, 4.30), unbounded.
-void run_thesis(const BrdfGrid& measured, const std::vector<Sample>& samples, const FitOptions& options, FitResult& result) {
-    MonochromeProblem problem{measured, samples};
+void run_thesis(const std::vector<Observation>& samples, const FitOptions& options, FitResult& result) {
+    MonochromeProblem problem{samples};
     Eigen::VectorXd a(3);
     a << options.start_ns, options.start_cd, options.start_cs;
     LevenbergMarquardtOptions lm;
     lm.iterations = options.iterations;
     result.stage1 = levenberg_marquardt(problem, a, lm, [&](const Eigen::VectorXd& now) {
-        result.error_per_iteration.push_back(std::sqrt(error_number(measured, samples, -1, now[0], now[1], now[2])));
+        result.error_per_iteration.push_back(std::sqrt(error_number(samples, -1, now[0], now[1], now[2])));
     });
     result.ns = a[0];
     result.mono_cd = a[1];
@@ -283,7 +299,7 @@ void run_thesis(const BrdfGrid& measured, const std::vector<Sample>& samples, co
     for (int c = 0; c < 3; ++c) {
         Eigen::VectorXd target(static_cast<Eigen::Index>(samples.size()));
         for (size_t j = 0; j < samples.size(); ++j)
-            target[static_cast<Eigen::Index>(j)] = samples[j].weight * measured.values[samples[j].value_index][static_cast<size_t>(c)];
+            target[static_cast<Eigen::Index>(j)] = samples[j].weight * samples[j].value[static_cast<size_t>(c)];
         const Eigen::VectorXd x = qr.solve(target);
         result.cd[static_cast<size_t>(c)] = x[0];
         result.cs[static_cast<size_t>(c)] = x[1];
@@ -314,33 +330,98 @@ void validate(const FitOptions& options) {
         throw UsageError("fit: the start cs must be a number >= 0, not " + std::to_string(options.start_cs));
 }
 
+Observations observations(const BrdfGrid& grid, double limit_deg) {
+    const std::vector<double> w = solid_angle_weights(grid, limit_deg);
+    double sum = 0;
+    for (double x : w) sum += x;
+    Observations data;
+    data.total = grid.size();
+    for (size_t i = 0; i < grid.theta_in.size(); ++i) {
+        const glm::dvec3 l = grid.light(i);
+        for (size_t o = 0; o < grid.theta_out.size(); ++o)
+            for (size_t p = 0; p < grid.phi_out.size(); ++p) {
+                const double weight = w[o * grid.phi_out.size() + p];
+                // Light at the horizon: weight cos θi = 0, and the lobe's max(n·l, n·v) may be 0 too (0 · ∞).
+                if (grid.theta_in[i] > limit_deg || l.z < 1e-9 || weight <= 0) {
+                    ++data.outside_limit;
+                    continue;
+                }
+                data.samples.push_back({l, grid.camera(o, p), weight * l.z / sum, grid.values[grid.index(i, o, p)]});
+            }
+    }
+    return data;
+}
+
+Observations observations(const MerlBrdf& merl, double limit_deg) {
+    // Every bin at its centre: θh = ((h + ½)/90)² · 90° (the table's square-root index), θd and φd
+    // linear, φh = 0 (isotropic). Its measure in (ωi, ωo) is 4 cos θd sin θh sin θd dθh dθd dφd
+    // (Rusinkiewicz's Jacobian, dφh integrated); times cos θi as in eq. 4.25.
+    const double limit_cos = std::cos(limit_deg * kPi / 180.0) - 1e-12;
+    Observations data;
+    data.total = static_cast<size_t>(kMerlThetaH) * kMerlThetaD * kMerlPhiD;
+    data.samples.reserve(data.total);
+    double sum = 0;
+    for (int h = 0; h < kMerlThetaH; ++h) {
+        const double d_theta_h = (2.0 * h + 1.0) / (kMerlThetaH * kMerlThetaH) * kPi / 2;
+        for (int d = 0; d < kMerlThetaD; ++d)
+            for (int p = 0; p < kMerlPhiD; ++p) {
+                const BinDirections b = merl_bin_centre(h, d, p);
+                const std::array<double, 3> value = merl.bin(h, d, p);
+                if (value[0] < 0 || value[1] < 0 || value[2] < 0) {
+                    ++data.masked;
+                    continue;
+                }
+                if (b.l.z < limit_cos || b.v.z < limit_cos || b.l.z < 1e-9 || b.v.z < 1e-9) {
+                    ++data.outside_limit;
+                    continue;
+                }
+                const double measure = 4.0 * std::cos(b.theta_diff) * std::sin(b.theta_half) * std::sin(b.theta_diff) * d_theta_h *
+                                       (kPi / 2 / kMerlThetaD) * (kPi / kMerlPhiD);
+                sum += measure * b.l.z;
+                data.samples.push_back({b.l, b.v, measure * b.l.z, value});
+            }
+    }
+    // The weights sum to 1: a cost does not grow with the number of bins.
+    for (Observation& o : data.samples) o.weight /= sum;
+    return data;
+}
+
 FitResult fit_ashikhmin_shirley(const BrdfGrid& measured, const FitOptions& options) {
     validate(options);
-    const std::vector<Sample> samples = samples_inside(measured, options.limit_deg);
+    return fit_ashikhmin_shirley(observations(measured, options.limit_deg), options);
+}
+
+FitResult fit_ashikhmin_shirley(const Observations& data, const FitOptions& options) {
+    validate(options);
+    const std::vector<Observation>& samples = data.samples;
     if (samples.size() < 3) throw Error("fit: fewer than 3 samples inside the limit angle");
 
     FitResult result;
     result.samples_used = static_cast<int>(samples.size());
+    result.samples_masked = data.masked;
+    if (data.masked > 0)
+        result.warnings.push_back(std::to_string(data.masked) + " of " + std::to_string(data.total) +
+                                  " samples are unmeasured (negative) and left out");
     if (options.solver == Solver::Global) {
-        run_global(measured, samples, result);
+        run_global(samples, result);
         result.mono_cd = (result.cd[0] + result.cd[1] + result.cd[2]) / 3.0;
         result.mono_cs = (result.cs[0] + result.cs[1] + result.cs[2]) / 3.0;
     } else {
-        run_thesis(measured, samples, options, result);
+        run_thesis(samples, options, result);
     }
-    result.error_mono = std::sqrt(error_number(measured, samples, -1, result.ns, result.mono_cd, result.mono_cs));
+    result.error_mono = std::sqrt(error_number(samples, -1, result.ns, result.mono_cd, result.mono_cs));
     double rgb_sum = 0;
     for (int c = 0; c < 3; ++c)
-        rgb_sum += error_number(measured, samples, c, result.ns, result.cd[static_cast<size_t>(c)], result.cs[static_cast<size_t>(c)]);
+        rgb_sum += error_number(samples, c, result.ns, result.cd[static_cast<size_t>(c)], result.cs[static_cast<size_t>(c)]);
     result.error_rgb = std::sqrt(rgb_sum);
-    result.cost = weighted_cost(measured, samples, result.ns, result.cd, result.cs);
+    result.cost = weighted_cost(samples, result.ns, result.cd, result.cs);
     if (options.solver == Solver::Global) {
         result.optimum_cost = result.cost;
     } else {
         // What the thesis' schedule reached, against the global optimum of the same problem.
         FitResult best;
-        run_global(measured, samples, best);
-        result.optimum_cost = weighted_cost(measured, samples, best.ns, best.cd, best.cs);
+        run_global(samples, best);
+        result.optimum_cost = weighted_cost(samples, best.ns, best.cd, best.cs);
         if (result.cost > 1.001 * result.optimum_cost + 1e-300) {
             result.converged = false;
             char text[256];

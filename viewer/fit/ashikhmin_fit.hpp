@@ -10,6 +10,7 @@
 
 #include "fit/brdf_grid.hpp"
 #include "fit/levenberg_marquardt.hpp"
+#include "fit/merl.hpp"
 
 namespace fxview::fit {
 
@@ -44,6 +45,7 @@ struct FitResult {
     double error_mono = 0, error_rgb = 0;  // e = sqrt(Σ(f − y)²) over the samples used, unweighted (eq. 4.1)
     std::vector<double> error_per_iteration;  // stage 1's e after each iteration (fig. 5.2)
     int samples_used = 0;  // directions inside the limit
+    size_t samples_masked = 0;  // unmeasured samples left out
     LevenbergMarquardtReport stage1;  // the thesis solver's stage 1
 
     // The problem both solvers solve: the weighted RGB cost Σ_c Σ_j (w_j (y_jc − f_jc))² (eq. 4.27).
@@ -59,11 +61,33 @@ struct FitResult {
 // UsageError.
 void validate(const FitOptions& options);
 
+// One measured direction pair: light and view (unit vectors, +z hemisphere), RGB in 1/sr, and its
+// weight in the residual (eq. 4.25: the sample's measure × cos θi, normalised over the samples).
+struct Observation {
+    glm::dvec3 l, v;
+    double weight;
+    std::array<double, 3> value;
+};
+
+struct Observations {
+    std::vector<Observation> samples;  // the ones fitted
+    size_t total = 0;                  // samples in the data
+    size_t masked = 0;                 // unmeasured (negative in a MERL file): counted, never fitted
+    size_t outside_limit = 0;          // beyond the limit angle or at the horizon
+};
+
+// A grid: the thesis' weights (camera solid angle × cos θi).
+Observations observations(const BrdfGrid& grid, double limit_deg);
+// A MERL file at full density: every measured bin at its centre, weighted by its measure in
+// (ωi, ωo) × cos θi; no resampling.
+Observations observations(const MerlBrdf& merl, double limit_deg);
+
 // The specular lobe of eq. 4.28 without cs: (ns + 1)/(8π) (n·h)^ns / ((h·v) max(n·l, n·v)), n = +z,
 // with n·h clamped to 1e-4 (ch. 4.2.4) so that its logarithm exists.
 double ashikhmin_lobe(const glm::dvec3& l, const glm::dvec3& v, double ns);
 
 FitResult fit_ashikhmin_shirley(const BrdfGrid& measured, const FitOptions& options);
+FitResult fit_ashikhmin_shirley(const Observations& data, const FitOptions& options);
 
 // The model's values on the measured grid (for previews and error maps).
 BrdfGrid evaluate_fit(const BrdfGrid& grid, const FitResult& fit);

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <concepts>
 #include <functional>
 #include <limits>
 #include <string>
@@ -48,26 +49,57 @@ struct BoundedReport {
     bool converged() const { return reason != StopReason::Iterations; }
 };
 
+// A problem with many residuals may hand over its normal equations instead of its Jacobian (which
+// would not fit in memory): double cost(a) and double normal_equations(a, JᵀJ, Jᵀr) returning the cost.
+template <typename Functor>
+concept NormalEquationsProblem = requires(const Functor& f, const Eigen::VectorXd& a, Eigen::MatrixXd& m, Eigen::VectorXd& g) {
+    { f.cost(a) } -> std::convertible_to<double>;
+    { f.normal_equations(a, m, g) } -> std::convertible_to<double>;
+};
+
+template <typename Functor>
+double problem_cost(const Functor& functor, const Eigen::VectorXd& a) {
+    if constexpr (NormalEquationsProblem<Functor>) {
+        return functor.cost(a);
+    } else {
+        Eigen::VectorXd r;
+        functor.residuals(a, r);
+        return r.squaredNorm();
+    }
+}
+
+template <typename Functor>
+void problem_normal_equations(const Functor& functor, const Eigen::VectorXd& a, Eigen::MatrixXd& normal, Eigen::VectorXd& gradient) {
+    if constexpr (NormalEquationsProblem<Functor>) {
+        functor.normal_equations(a, normal, gradient);
+    } else {
+        Eigen::VectorXd r;
+        Eigen::MatrixXd jacobian;
+        functor.residuals(a, r);
+        functor.jacobian(a, jacobian);
+        normal = jacobian.transpose() * jacobian;
+        gradient = jacobian.transpose() * r;
+    }
+}
+
 // Functor: void residuals(const Eigen::VectorXd& a, Eigen::VectorXd& r) const;
 //          void jacobian(const Eigen::VectorXd& a, Eigen::MatrixXd& j) const;   // j(i, k) = ∂r_i/∂a_k
+// or a NormalEquationsProblem.
 template <typename Functor>
 BoundedReport bounded_levenberg_marquardt(const Functor& functor, Eigen::VectorXd& a, const Eigen::VectorXd& lower,
                                           const Eigen::VectorXd& upper, const BoundedOptions& options = {}) {
     const Eigen::Index n = a.size();
     a = a.cwiseMax(lower).cwiseMin(upper);
     BoundedReport report;
-    Eigen::VectorXd r, candidate_r;
-    Eigen::MatrixXd jacobian;
-    functor.residuals(a, r);
+    double cost = problem_cost(functor, a), lambda = options.lambda_start;
     ++report.evaluations;
-    double cost = r.squaredNorm(), lambda = options.lambda_start;
     bool fresh = false;
-    Eigen::VectorXd gradient;
+    Eigen::VectorXd gradient;  // Jᵀr = ½ ∇cost
+    Eigen::MatrixXd jtj;
     std::vector<bool> held(static_cast<size_t>(n));
     for (report.iterations = 0; report.iterations < options.max_iterations;) {
         if (!fresh) {
-            functor.jacobian(a, jacobian);
-            gradient = jacobian.transpose() * r;  // ½ ∇cost
+            problem_normal_equations(functor, a, jtj, gradient);
             fresh = true;
             // Held: on a bound with the descent direction (−gradient) pointing out of the box.
             double projected = 0;
@@ -82,7 +114,7 @@ BoundedReport bounded_levenberg_marquardt(const Functor& functor, Eigen::VectorX
             }
         }
         ++report.iterations;
-        Eigen::MatrixXd normal = jacobian.transpose() * jacobian;
+        Eigen::MatrixXd normal = jtj;
         Eigen::VectorXd rhs = -gradient;
         for (Eigen::Index k = 0; k < n; ++k) {
             normal(k, k) += lambda * std::max(normal(k, k), 1e-300);
@@ -99,13 +131,11 @@ BoundedReport bounded_levenberg_marquardt(const Functor& functor, Eigen::VectorX
             report.reason = StopReason::Step;
             break;
         }
-        functor.residuals(candidate, candidate_r);
+        const double candidate_cost = problem_cost(functor, candidate);
         ++report.evaluations;
-        const double candidate_cost = candidate_r.squaredNorm();
         if (std::isfinite(candidate_cost) && candidate_cost < cost) {
             const double decrease = (cost - candidate_cost) / cost;
             a = candidate;
-            r = candidate_r;
             cost = candidate_cost;
             fresh = false;
             lambda = std::max(lambda / 3.0, 1e-12);

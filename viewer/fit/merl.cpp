@@ -40,11 +40,17 @@ std::array<int, 3> merl_bins(const glm::dvec3& l, const glm::dvec3& v) {
     return {std::clamp(h, 0, kMerlThetaH - 1), std::clamp(d, 0, kMerlThetaD - 1), std::clamp(p, 0, kMerlPhiD - 1)};
 }
 
-std::array<double, 3> MerlBrdf::lookup(const glm::dvec3& l, const glm::dvec3& v) const {
-    const auto [h, d, p] = merl_bins(l, v);
+std::array<double, 3> MerlBrdf::bin(int h, int d, int p) const {
     const size_t index = static_cast<size_t>(p) + static_cast<size_t>(d) * kMerlPhiD + static_cast<size_t>(h) * kMerlPhiD * kMerlThetaD;
     std::array<double, 3> rgb{};
-    for (size_t c = 0; c < 3; ++c) rgb[c] = std::max(data[index + c * kCount] * kScale[c], 0.0);  // negative: not measured
+    for (size_t c = 0; c < 3; ++c) rgb[c] = data[index + c * kCount] * kScale[c];
+    return rgb;
+}
+
+std::array<double, 3> MerlBrdf::lookup(const glm::dvec3& l, const glm::dvec3& v) const {
+    const auto [h, d, p] = merl_bins(l, v);
+    std::array<double, 3> rgb = bin(h, d, p);
+    for (double& c : rgb) c = std::max(c, 0.0);  // negative: not measured
     return rgb;
 }
 
@@ -76,6 +82,31 @@ void write_merl(const MerlBrdf& merl, const std::string& path) {
     out.write(reinterpret_cast<const char*>(dims), sizeof dims);
     out.write(reinterpret_cast<const char*>(merl.data.data()), static_cast<std::streamsize>(merl.data.size() * sizeof(double)));
     if (!out) throw Error(path + ": cannot write");
+}
+
+BinDirections merl_bin_centre(int h, int d, int p) {
+    const double theta_h = std::pow((h + 0.5) / kMerlThetaH, 2.0) * kPi / 2;
+    const double theta_d = (d + 0.5) / kMerlThetaD * kPi / 2, phi_d = (p + 0.5) / kMerlPhiD * kPi;
+    const glm::dvec3 half(std::sin(theta_h), 0.0, std::cos(theta_h));
+    // The difference vector (θd, φd) about the half vector, turned by θh about y.
+    const glm::dvec3 diff(std::sin(theta_d) * std::cos(phi_d), std::sin(theta_d) * std::sin(phi_d), std::cos(theta_d));
+    const glm::dvec3 l = rotate(diff, {0, 1, 0}, theta_h);
+    return {l, 2.0 * glm::dot(l, half) * half - l, theta_h, theta_d};
+}
+
+MerlBrdf tabulate_merl(const std::function<std::array<double, 3>(const glm::dvec3& l, const glm::dvec3& v)>& f) {
+    MerlBrdf merl;
+    merl.data.assign(3 * kCount, -1.0);  // below the horizon: unmeasured, as in the database
+    for (int h = 0; h < kMerlThetaH; ++h)
+        for (int d = 0; d < kMerlThetaD; ++d)
+            for (int p = 0; p < kMerlPhiD; ++p) {
+                const BinDirections b = merl_bin_centre(h, d, p);
+                if (b.l.z <= 0 || b.v.z <= 0) continue;
+                const std::array<double, 3> value = f(b.l, b.v);
+                const size_t index = static_cast<size_t>(p) + static_cast<size_t>(d) * kMerlPhiD + static_cast<size_t>(h) * kMerlPhiD * kMerlThetaD;
+                for (size_t c = 0; c < 3; ++c) merl.data[index + c * kCount] = value[c] / kScale[c];
+            }
+    return merl;
 }
 
 BrdfGrid merl_to_grid(const MerlBrdf& merl, const BrdfGrid& grid) {

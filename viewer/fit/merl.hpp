@@ -7,6 +7,7 @@
 #pragma once
 #include "core/limits.hpp"
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@ namespace fxview::fit {
 struct MerlBrdf {
     std::vector<double> data;  // 3 × 90 × 90 × 180, as stored (unscaled)
     std::array<double, 3> lookup(const glm::dvec3& l, const glm::dvec3& v) const;  // RGB in 1/sr; 0 where unmeasured
+    std::array<double, 3> bin(int h, int d, int p) const;  // RGB in 1/sr as stored: negative where unmeasured
 };
 
 constexpr int kMerlThetaH = 90, kMerlThetaD = 90, kMerlPhiD = 180;
@@ -28,6 +30,17 @@ std::array<int, 3> merl_bins(const glm::dvec3& l, const glm::dvec3& v);
 
 MerlBrdf read_merl(const std::string& path, const ResourceLimits& limits = {});                   // Error naming the file on bad size/data
 void write_merl(const MerlBrdf& merl, const std::string& path);  // for tests and conversions
+
+// The light and view directions at the centre of a bin: θh = ((h + ½)/90)² · 90° (the table's
+// square-root index), θd = (d + ½)°, φd = (p + ½)°, φh = 0.
+struct BinDirections {
+    glm::dvec3 l, v;
+    double theta_half, theta_diff;
+};
+BinDirections merl_bin_centre(int h, int d, int p);
+
+// A MERL table of an analytic BRDF, each bin its value at the bin's centre (synthetic test data).
+MerlBrdf tabulate_merl(const std::function<std::array<double, 3>(const glm::dvec3& l, const glm::dvec3& v)>& f);
 
 // The MERL BRDF sampled at the directions of `grid` (e.g. thesis_grid()).
 BrdfGrid merl_to_grid(const MerlBrdf& merl, const BrdfGrid& grid);

@@ -44,8 +44,9 @@ void upload_preview(FitPanelState& state, const fit::BrdfGrid& measured, const f
 
 bool run_fit(FitPanelState& state, render::EffectSession* session) {
     try {
-        const fit::BrdfGrid measured = fit::read_measurement(state.path);
-        fit::FitResult result = fit::fit_ashikhmin_shirley(measured, state.options);
+        const fit::Measurement measurement = fit::read_measurement_for_fit(state.path);
+        const fit::BrdfGrid& measured = measurement.grid;
+        fit::FitResult result = fit::fit_ashikhmin_shirley(fit::observations(measurement, state.options.limit_deg), state.options);
         upload_preview(state, measured, result);
         if (session && has_fit_parameters(*session)) {
             auto& numbers = session->values().numbers;
