@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <cstdint>
 #include <tuple>
 #include <cstdio>
 #include <filesystem>
@@ -329,4 +330,35 @@ TEST_CASE("fit and brdf-grid reject bad input: exit 2 for arguments, 1 naming fi
     const Result r = run("fit " + broken);
     CHECK(r.exit_code == 1);
     CHECK(r.err.find("broken-grid.csv:2:") != std::string::npos);
+
+    // A number followed by anything else is not a number (strtod would read 0.25 and stop).
+    const std::string partial = temp_path("partial-number.csv");
+    std::ofstream(partial) << "theta_in_deg,theta_out_deg,phi_out_deg,r,g,b\n0,0,0,0.25garbage,1,1\n";
+    const Result p = run("fit " + partial);
+    CHECK(p.exit_code == 1);
+    CHECK(p.err.find("partial-number.csv:2: '0.25garbage' is not a finite number") != std::string::npos);
+
+    // Model parameters outside the model's domain, and grids beyond the documented bound.
+    for (const char* args : {"--param ns=-5", "--param ns=nan", "--param ns=1,2", "--model pbr --param roughness=0",
+                             "--model pbr --param base=1.5", "--model ashikhmin-shirley --param nu=0", "--samples 8000 2 2",
+                             "--samples 2000 2000 2000", "--samples 1 19 36"}) {
+        CAPTURE(args);
+        const Result bad = run(std::string("brdf-grid ") + args + " --out " + temp_path("x.csv"));
+        CHECK(bad.exit_code == 2);
+        CHECK(bad.err.find("fxview") != std::string::npos);
+    }
+
+    // MERL headers with impossible dimensions are rejected before anything is allocated.
+    for (const std::int32_t dims : {-180, 0, 1 << 30}) {
+        const std::string merl = temp_path("dims.binary");
+        {
+            std::ofstream out(merl, std::ios::binary);
+            const std::int32_t header[3] = {90, 90, dims};
+            out.write(reinterpret_cast<const char*>(header), sizeof header);
+        }
+        const Result m = run("fit " + merl);
+        CAPTURE(dims);
+        CHECK(m.exit_code == 1);
+        CHECK(m.err.find("dims.binary: not a MERL BRDF") != std::string::npos);
+    }
 }

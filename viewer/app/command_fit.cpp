@@ -76,36 +76,48 @@ std::function<std::array<double, 3>(const glm::dvec3&, const glm::dvec3&)> analy
         values[p.substr(0, eq)] = std::vector<double>(floats.begin(), floats.end());
     }
     std::vector<std::string> used;
-    const auto number = [&](const std::string& key, double fallback) {
+    // Each value must lie in the model's domain: outside it the model is not a BRDF (a negative
+    // exponent, a GGX of roughness 0 is a delta) and the grid would hold NaN or infinities.
+    const auto check = [](const std::string& key, double v, double low, double high, bool open_low) {
+        if (v < low || v > high || (open_low && v == low)) {
+            char message[160];
+            std::snprintf(message, sizeof message, ": %g is outside the model's range %s%g, %g]", v, open_low ? "(" : "[", low, high);
+            throw UsageError("--param " + key + message);
+        }
+    };
+    const auto number = [&](const std::string& key, double fallback, double low, double high, bool open_low = false) {
         used.push_back(key);
         const auto found = values.find(key);
-        return found == values.end() ? fallback : found->second.at(0);
+        if (found == values.end()) return fallback;
+        if (found->second.size() != 1) throw UsageError("--param " + key + ": expected one value");
+        check(key, found->second[0], low, high, open_low);
+        return found->second[0];
     };
-    const auto colour = [&](const std::string& key, glm::dvec3 fallback) {
+    const auto colour = [&](const std::string& key, glm::dvec3 fallback, double high = 1e6) {
         used.push_back(key);
         const auto found = values.find(key);
         if (found == values.end()) return fallback;
         const auto& v = found->second;
-        if (v.size() == 1) return glm::dvec3(v[0]);
-        if (v.size() != 3) throw UsageError("--param " + key + ": expected one value or r,g,b");
-        return glm::dvec3(v[0], v[1], v[2]);
+        if (v.size() != 1 && v.size() != 3) throw UsageError("--param " + key + ": expected one value or r,g,b");
+        for (double x : v) check(key, x, 0.0, high, false);
+        return v.size() == 1 ? glm::dvec3(v[0]) : glm::dvec3(v[0], v[1], v[2]);
     };
     const brdf::Directions frame{{0, 0, 1}, {}, {}, {1, 0, 0}};
     std::function<std::array<double, 3>(const glm::dvec3&, const glm::dvec3&)> f;
     if (name == "ashikhmin-fit") {
-        brdf::AshikhminShirleyFit m{colour("cd", glm::dvec3(0.2)), colour("cs", glm::dvec3(0.2)), number("ns", 50)};
+        brdf::AshikhminShirleyFit m{colour("cd", glm::dvec3(0.2)), colour("cs", glm::dvec3(0.2)), number("ns", 50, 0, 1e6, true)};
         f = [=](const glm::dvec3& l, const glm::dvec3& v) { return rgb(brdf::evaluate(m, {frame.n, l, v, frame.t})); };
     } else if (name == "ashikhmin-shirley") {
-        brdf::AshikhminShirley m{colour("rd", glm::dvec3(0.5)), colour("rs", glm::dvec3(0.05)), number("nu", 100), number("nv", 100)};
+        brdf::AshikhminShirley m{colour("rd", glm::dvec3(0.5)), colour("rs", glm::dvec3(0.05), 1.0), number("nu", 100, 0, 1e6, true), number("nv", 100, 0, 1e6, true)};
         f = [=](const glm::dvec3& l, const glm::dvec3& v) { return rgb(brdf::evaluate(m, {frame.n, l, v, frame.t})); };
     } else if (name == "pbr") {
-        brdf::MetallicRoughness m{colour("base", {1.0, 0.71, 0.29}), number("metallic", 1), number("roughness", 0.4)};
+        brdf::MetallicRoughness m{colour("base", {1.0, 0.71, 0.29}, 1.0), number("metallic", 1, 0, 1), number("roughness", 0.4, 0, 1, true)};
         f = [=](const glm::dvec3& l, const glm::dvec3& v) { return rgb(brdf::evaluate(m, {frame.n, l, v, frame.t})); };
     } else if (name == "phong") {
-        brdf::ModifiedPhong m{colour("kd", glm::dvec3(0.5)), number("ks", 0.4), number("n", 40)};
+        brdf::ModifiedPhong m{colour("kd", glm::dvec3(0.5)), number("ks", 0.4, 0, 1e6), number("n", 40, 0, 1e6)};
         f = [=](const glm::dvec3& l, const glm::dvec3& v) { return rgb(brdf::evaluate(m, {frame.n, l, v, frame.t})); };
     } else if (name == "cook-torrance") {
-        brdf::CookTorranceBeckmann m{colour("kd", glm::dvec3(0.4)), number("ks", 1), number("m", 0.3), number("eta", 1.5), false};
+        brdf::CookTorranceBeckmann m{colour("kd", glm::dvec3(0.4)), number("ks", 1, 0, 1e6), number("m", 0.3, 0, 10, true), number("eta", 1.5, 0, 100, true), false};
         f = [=](const glm::dvec3& l, const glm::dvec3& v) { return rgb(brdf::evaluate(m, {frame.n, l, v, frame.t})); };
     } else {
         throw UsageError("--model: unknown model '" + name + "' (ashikhmin-fit, ashikhmin-shirley, pbr, phong, cook-torrance)");

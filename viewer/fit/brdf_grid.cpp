@@ -41,6 +41,15 @@ BrdfGrid thesis_grid() { return uniform_grid(19, 37, 36); }
 
 BrdfGrid uniform_grid(int theta_in_count, int theta_out_count, int phi_out_count) {
     if (theta_in_count < 2 || theta_out_count < 2 || phi_out_count < 2) throw UsageError("a BRDF grid needs at least 2 samples per angle");
+    // The per-angle bound is 0.025° steps in φ, finer than any goniometer; the total bound keeps a grid's
+    // memory (24 bytes a direction) and its CSV (about 80 bytes a line at 17 digits) within ~320 MB.
+    if (theta_in_count > kMaxGridSamplesPerAngle || theta_out_count > kMaxGridSamplesPerAngle || phi_out_count > kMaxGridSamplesPerAngle)
+        throw UsageError("a BRDF grid takes at most " + std::to_string(kMaxGridSamplesPerAngle) + " samples per angle");
+    const double directions = double(theta_in_count) * theta_out_count * phi_out_count;
+    if (directions > kMaxGridDirections)
+        throw UsageError("a BRDF grid of " + std::to_string(theta_in_count) + " x " + std::to_string(theta_out_count) + " x " +
+                         std::to_string(phi_out_count) + " directions is larger than the bound of " + std::to_string(kMaxGridDirections) +
+                         " (a MERL table holds 1.46 million: use --merl-out for that density)");
     BrdfGrid grid;
     grid.theta_in = steps(0, 90, theta_in_count);
     grid.theta_out = steps(0, 90, theta_out_count);

@@ -27,7 +27,10 @@ struct BrdfGrid {
 
 // The thesis' grid: θi 0..90 in 5° (19), θo 0..90 in 2.5° (37), φo 0..180 in 36 steps; values zero.
 BrdfGrid thesis_grid();
+inline constexpr int kMaxGridSamplesPerAngle = 7201;
+inline constexpr int kMaxGridDirections = 4'000'000;
 // A uniform grid over the same ranges with `theta_in_count`, `theta_out_count`, `phi_out_count` samples.
+// Throws UsageError below 2 samples per angle or beyond the bounds above.
 BrdfGrid uniform_grid(int theta_in_count, int theta_out_count, int phi_out_count);
 // True when the grid spans θ 0..90° and φ 0..180° with uniform steps (what a 3D texture of it needs).
 bool is_uniform_full_grid(const BrdfGrid& grid);
