@@ -9,6 +9,7 @@
 #include <fstream>
 #include <numbers>
 
+#include "app/fit_preview.hpp"
 #include "brdf/models.hpp"
 #include "core/error.hpp"
 #include "fit/ashikhmin_fit.hpp"
@@ -251,4 +252,47 @@ TEST_CASE("MERL files are fitted at full density: every measured bin at its cent
         CHECK(fit.cs[c] == doctest::Approx(cs[c]).epsilon(1e-6));
     }
     CHECK(fit.converged);
+}
+
+TEST_CASE("the fit preview puts the mirror side in each panel's centre, signs the difference and greys rows outside the fit") {
+    // Measured: a narrow lobe around the mirror direction (phi_out = 0, theta_out = theta_in);
+    // model: the same lobe scaled by 0.5, so measured - model is positive (red) at the lobe only.
+    fit::BrdfGrid measured = fit::uniform_grid(3, 5, 7);  // θi 0/45/90, θo 0..90 in 22.5°, φo 0..180 in 30°
+    fit::BrdfGrid model = measured;
+    for (size_t i = 0; i < 3; ++i)
+        for (size_t o = 0; o < 5; ++o)
+            for (size_t p = 0; p < 7; ++p) {
+                const double lobe = (p == 0 && measured.theta_out[o] == measured.theta_in[i]) ? 1.0 : 0.0;
+                measured.values[measured.index(i, o, p)] = {lobe, lobe, lobe};
+                model.values[model.index(i, o, p)] = {0.5 * lobe, 0.5 * lobe, 0.5 * lobe};
+            }
+    app::PreviewOptions options;
+    options.brighten = 1.0;
+    options.limit_deg = 60.0;
+    const app::FitPreview preview = app::fit_preview(measured, model, options);
+    const int panel = 2 * 7 - 1, centre = 6;
+    CHECK(preview.image.width == 3 * panel + 2);
+    CHECK(preview.image.height == 3 * 5 + 2 + 1 + 4);  // rows, two block separators, a gap, the legend
+    CHECK(preview.difference_scale == doctest::Approx(0.5));
+    // θi = 45°, θo = 45° is row 1·(5 + 1) + 2: the lobe in the centre column of each panel, nowhere else.
+    const int row = 1 * 6 + 2;
+    CHECK(preview.image.pixel(centre, row)[0] == 1.0f);
+    CHECK(preview.image.pixel(centre - 1, row)[0] == 0.0f);
+    CHECK(preview.image.pixel(centre + 1, row)[0] == 0.0f);
+    CHECK(preview.image.pixel(panel + 1 + centre, row)[0] == 0.5f);
+    const float* difference = preview.image.pixel(2 * (panel + 1) + centre, row);
+    CHECK(difference[0] == 1.0f);  // measured above the model at full scale: pure red
+    CHECK(difference[2] == 0.0f);
+    // Separators between panels and between θi blocks are grey.
+    CHECK(preview.image.pixel(panel, 0)[1] == 0.5f);
+    CHECK(preview.image.pixel(0, 5)[1] == 0.5f);
+    // θo = 67.5° is outside the 60° limit: greyed (never black, never the data's value).
+    const float* greyed = preview.image.pixel(0, 3);
+    CHECK(greyed[0] > 0.0f);
+    CHECK(greyed[0] < 0.5f);
+    // The legend runs from blue (below the model) at the left to red at the right.
+    const float* left = preview.image.pixel(2 * (panel + 1), preview.image.height - 1);
+    const float* right = preview.image.pixel(2 * (panel + 1) + panel - 1, preview.image.height - 1);
+    CHECK(left[2] == 1.0f);
+    CHECK(right[0] == 1.0f);
 }

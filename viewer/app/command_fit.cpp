@@ -167,9 +167,13 @@ CommandRunner add_fit_command(CLI::App& app) {
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (!o->out.empty()) write_result_csv(r, o->out);
         if (!o->preset.empty()) write_preset(r, o->preset);
+        double preview_scale = 0;
         if (!o->preview.empty()) {
             create_parent(o->preview);
-            image::write_image(o->preview, fit_preview(measured, fit::evaluate_fit(measured, r), o->preview_options));
+            o->preview_options.limit_deg = o->fit.limit_deg;
+            const FitPreview preview = fit_preview(measured, fit::evaluate_fit(measured, r), o->preview_options);
+            image::write_image(o->preview, preview.image);
+            preview_scale = preview.difference_scale;
         }
         if (!o->progress.empty()) {
             create_parent(o->progress);
@@ -179,15 +183,15 @@ CommandRunner add_fit_command(CLI::App& app) {
             if (!out) throw Error(o->progress + ": cannot write");
         }
         if (o->json) {
-            std::cout << nlohmann::json{{"data", o->data}, {"samples_used", r.samples_used}, {"samples_masked", r.samples_masked}, {"limit_deg", o->fit.limit_deg},
+            nlohmann::json out{{"data", o->data}, {"samples_used", r.samples_used}, {"samples_masked", r.samples_masked}, {"limit_deg", o->fit.limit_deg},
                                         {"iterations", o->fit.iterations}, {"accepted_steps", r.stage1.accepted},
                                         {"ns", r.ns}, {"cd", r.cd}, {"cs", r.cs}, {"mono_cd", r.mono_cd}, {"mono_cs", r.mono_cs},
                                         {"rs", r.rs}, {"rd_renderer", r.rd_renderer}, {"cs_renderer", r.cs_renderer},
                                         {"error_mono", r.error_mono}, {"error_rgb", r.error_rgb}, {"seconds", seconds},
                                         {"solver", r.solver}, {"stop_reason", r.stop_reason}, {"converged", r.converged},
-                                        {"weighted_cost", r.cost}, {"optimum_cost", r.optimum_cost}, {"warnings", r.warnings}}
-                             .dump()
-                      << "\n";
+                                        {"weighted_cost", r.cost}, {"optimum_cost", r.optimum_cost}, {"warnings", r.warnings}};
+            if (!o->preview.empty()) out["preview_difference_scale"] = preview_scale;
+            std::cout << out.dump() << "\n";
         } else {
             std::printf("%s: %d directions inside %.0f deg, solver %s (%s), %.2f s\n", o->data.c_str(), r.samples_used, o->fit.limit_deg,
                         r.solver.c_str(), r.stop_reason.c_str(), seconds);
@@ -198,6 +202,10 @@ CommandRunner add_fit_command(CLI::App& app) {
             std::printf("weighted cost %.6g (optimum %.6g)%s\n", r.cost, r.optimum_cost, r.converged ? "" : "  NOT CONVERGED");
             std::printf("renderer form: Rs %.6f  Rd %.6f %.6f %.6f  cs' %.6f %.6f %.6f\n", r.rs, r.rd_renderer[0], r.rd_renderer[1],
                         r.rd_renderer[2], r.cs_renderer[0], r.cs_renderer[1], r.cs_renderer[2]);
+            if (!o->preview.empty())
+                std::printf("preview %s: measured | model | difference (red: measured above the model, blue: below, full colour at "
+                            "%.3g 1/sr, mean of RGB); phi_out = 0 (mirror side) in each panel's centre; rows beyond %.0f deg greyed\n",
+                            o->preview.c_str(), preview_scale, o->fit.limit_deg);
         }
         for (const std::string& warning : r.warnings) std::fprintf(stderr, "fxview fit: warning: %s\n", warning.c_str());
         return 0;

@@ -29,7 +29,10 @@ bool has_fit_parameters(const render::EffectSession& session) {
 void upload_preview(FitPanelState& state, const fit::BrdfGrid& measured, const fit::FitResult& result) {
     app::PreviewOptions options;
     options.brighten = state.preview_brighten;
-    const image::FloatImage preview = app::fit_preview(measured, fit::evaluate_fit(measured, result), options);
+    options.limit_deg = state.options.limit_deg;
+    const app::FitPreview fit_preview = app::fit_preview(measured, fit::evaluate_fit(measured, result), options);
+    const image::FloatImage& preview = fit_preview.image;
+    state.preview_difference_scale = fit_preview.difference_scale;
     std::vector<std::uint8_t> bytes(static_cast<size_t>(preview.width) * preview.height * 4);
     for (size_t i = 0; i < bytes.size(); ++i)
         bytes[i] = image::to_8bit(preview.data[i], i % 4 == 3 ? image::Encoding::Linear : image::Encoding::Srgb);
@@ -105,7 +108,13 @@ void draw_fit_panel(FitPanelState& state, render::EffectSession* session) {
                          ImVec2(0, 80));
     }
     if (state.preview.get() != 0) {
-        ImGui::TextDisabled("measured | model | difference (x%.0f); rows: theta_in blocks, theta_out; columns: phi_out", state.preview_brighten);
+        ImGui::PushTextWrapPos(0.0f);  // wrap at the panel's edge instead of cutting the text off
+        ImGui::TextDisabled("measured | model (x%.0f) | difference; rows: light angle blocks, view angle; columns: view azimuth, "
+                            "mirror side in the centre; rows outside the fit greyed",
+                            state.preview_brighten);
+        ImGui::TextDisabled("difference: red = measured above the model, blue = below, full colour at %.3g 1/sr (bar below)",
+                            state.preview_difference_scale);
+        ImGui::PopTextWrapPos();
         // Fit the image to the panel's width, keeping its aspect.
         const float width = ImGui::GetContentRegionAvail().x;
         const float height = width * static_cast<float>(state.preview_height) / static_cast<float>(state.preview_width);

@@ -21,6 +21,7 @@ struct FitPanelState {
     gl::Texture preview;  // measured | model | difference (seed 000 fig. 4.6/4.8), sRGB-encoded
     int preview_width = 0, preview_height = 0;
     float preview_brighten = 3.0f;
+    double preview_difference_scale = 0.0;  // |measured - model| at full colour in the difference panel
 };
 
 // Runs the fit of state.path and, when the session's effect has the fit parameters, applies the
