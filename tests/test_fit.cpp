@@ -9,7 +9,7 @@
 #include <fstream>
 #include <numbers>
 
-#include "app/fit_preview.hpp"
+#include "fit/fit_preview.hpp"
 #include "brdf/models.hpp"
 #include "core/error.hpp"
 #include "fit/ashikhmin_fit.hpp"
@@ -266,10 +266,10 @@ TEST_CASE("the fit preview puts the mirror side in each panel's centre, signs th
                 measured.values[measured.index(i, o, p)] = {lobe, lobe, lobe};
                 model.values[model.index(i, o, p)] = {0.5 * lobe, 0.5 * lobe, 0.5 * lobe};
             }
-    app::PreviewOptions options;
+    fit::PreviewOptions options;
     options.brighten = 1.0;
     options.limit_deg = 60.0;
-    const app::FitPreview preview = app::fit_preview(measured, model, options);
+    const fit::FitPreview preview = fit::fit_preview(measured, model, options);
     const int panel = 2 * 7 - 1, centre = 6;
     CHECK(preview.image.width == 3 * panel + 2);
     CHECK(preview.image.height == 3 * 5 + 2 + 1 + 4);  // rows, two block separators, a gap, the legend

@@ -1,7 +1,7 @@
 // A measured BRDF on any mesh, beside the Ashikhmin-Shirley model fitted to it (seed 000; BRDF
 // Explorer's side-by-side view): `Measured` looks the data up by angle in a 3D texture (trilinear
 // over φo, θo, θi; the file is a grid CSV or a MERL .binary, `--set Measured=FILE`), `Fitted` is eq.
-// 4.28 with FitDiffuse/FitSpecular/FitExponent (which the viewer's Fit tab fills), `Difference` their
+// 4.28 with FitDiffuse/FitSpecular/FitExponent (which its plugin FitAshikhminShirley fills), `Difference` their
 // absolute difference. Radiance L = f · E · (n·l). CPU references: viewer/reference/measured_reference.cpp.
 #include "standard.glsl"
 #include "brdf.glsl"
@@ -14,6 +14,14 @@ uniform vec3 FitDiffuse < string UIName = "cd"; string UIWidget = "color"; strin
 uniform vec3 FitSpecular < string UIName = "cs"; string UIWidget = "color"; string UIGroup = "Ashikhmin-Shirley fit (eq. 4.28)"; > = {0.57, 0.39, 0.20};
 uniform float FitExponent < string UIName = "ns"; float UIMin = 1; float UIMax = 10000; string UIGroup = "Ashikhmin-Shirley fit (eq. 4.28)"; > = 150.0;
 uniform float DifferenceScale < string UIName = "Difference scale"; float UIMin = 1; float UIMax = 100; string UIGroup = "View"; > = 1.0;
+
+// The fit as a plugin of this effect (docs/plugins.md): the viewer's Plugins tab and
+// `fxview plugin run effects/brdf/measured.fx FitAshikhminShirley` fit the model to the data behind
+// the Measured sampler and write cd, cs and ns into the three parameters above.
+plugin FitAshikhminShirley < string Type = "brdf-fit"; string UIName = "Fit Ashikhmin-Shirley to the measured BRDF";
+                             string Data = "Measured"; string Model = "ashikhmin-fit";
+                             string Targets = "FitDiffuse, FitSpecular, FitExponent"; string Technique = "Fitted";
+                             float Limit = 75; string Solver = "global"; >;
 
 // The grid's angles of this fragment's light and view directions: θi, θo from the normal and φo as
 // 180° minus the azimuth between them (φo = 0: the camera on the far side of the light, the mirror side).

@@ -5,6 +5,7 @@
 #include "context/context.hpp"
 #include "effect/effect_program.hpp"
 #include "effect/parser.hpp"
+#include "plugin/plugin.hpp"
 #include "render/effect_resources.hpp"
 
 namespace fxview::app {
@@ -39,7 +40,17 @@ int check_effect(const std::string& path, const effect::LoadOptions& load_option
             print_error(error.what());
             ++broken;
         }
-        if (broken == 0) std::cout << path << ": ok (" << effect.techniques.size() << " techniques)\n";
+        for (const auto& declaration : effect.plugins) {
+            try {  // a plugin's type and bindings (targets, data sampler) against the effect
+                plugin::create(effect, declaration, texture_folders());
+            } catch (const effect::EffectError& error) {
+                print_error(error.what());
+                ++broken;
+            }
+        }
+        if (broken == 0)
+            std::cout << path << ": ok (" << effect.techniques.size() << " techniques"
+                      << (effect.plugins.empty() ? "" : ", " + std::to_string(effect.plugins.size()) + " plugins") << ")\n";
         return broken;
     } catch (const effect::EffectError& error) {
         print_error(error.what());

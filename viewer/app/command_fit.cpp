@@ -13,7 +13,7 @@
 #include <random>
 
 #include "app/commands.hpp"
-#include "app/fit_preview.hpp"
+#include "fit/fit_preview.hpp"
 #include "app/value_parsing.hpp"
 #include "brdf/models.hpp"
 #include "core/error.hpp"
@@ -133,7 +133,7 @@ CommandRunner add_fit_command(CLI::App& app) {
     struct Options {
         std::string data, out, preset, preview, progress, solver = "global";
         fit::FitOptions fit;
-        PreviewOptions preview_options;
+        fit::PreviewOptions preview_options;
         bool json = false;
     };
     auto o = std::make_shared<Options>();
@@ -171,7 +171,7 @@ CommandRunner add_fit_command(CLI::App& app) {
         if (!o->preview.empty()) {
             create_parent(o->preview);
             o->preview_options.limit_deg = o->fit.limit_deg;
-            const FitPreview preview = fit_preview(measured, fit::evaluate_fit(measured, r), o->preview_options);
+            const fit::FitPreview preview = fit::fit_preview(measured, fit::evaluate_fit(measured, r), o->preview_options);
             image::write_image(o->preview, preview.image);
             preview_scale = preview.difference_scale;
         }

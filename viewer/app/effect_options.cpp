@@ -58,7 +58,7 @@ effect::LoadOptions effect_load_options(const AccessOptions& access) {
     return options;
 }
 
-std::unique_ptr<render::EffectSession> open_effect_session(const EffectOptions& options) {
+effect::LoadOptions effect_load_options(const EffectOptions& options) {
     effect::LoadOptions load_options = effect_load_options(options.access);
     // A texture file named on the command line (--set Sampler=FILE) is the user's own choice.
     for (const auto& assignment : options.sets)
@@ -67,7 +67,11 @@ std::unique_ptr<render::EffectSession> open_effect_session(const EffectOptions& 
             const std::string value = assignment.substr(equals + 1);
             if (std::filesystem::is_regular_file(value, error)) load_options.access.allow_file(value);
         }
-    auto session = std::make_unique<render::EffectSession>(options.path, std::move(load_options), texture_folders());
+    return load_options;
+}
+
+std::unique_ptr<render::EffectSession> open_effect_session(const EffectOptions& options) {
+    auto session = std::make_unique<render::EffectSession>(options.path, effect_load_options(options), texture_folders());
     if (!options.technique.empty()) session->select_technique(options.technique);
     if (!options.preset.empty()) {
         const effect::Preset preset = effect::load_preset(options.preset, session->effect(), session->values());

@@ -34,6 +34,8 @@ void add_effect_options(CLI::App& command, EffectOptions& options);
 // The include path, the file-access policy (the search roots effects/lib, textures/ and spectra/
 // plus every --allow-path folder; the effect's own folder is added when it loads) and the budgets.
 effect::LoadOptions effect_load_options(const AccessOptions& access);
+// The same, plus read access to the files that --set names for samplers (the user's own choice).
+effect::LoadOptions effect_load_options(const EffectOptions& options);
 // Where texture files are searched after the effect's own folder: textures/ of the source tree
 // (or $FXVIEW_TEXTURES_DIR).
 std::vector<std::string> texture_folders();

@@ -101,6 +101,18 @@ struct Technique {
     SourceLocation where;
 };
 
+// `plugin NAME < string Type = "brdf-fit"; ... >;`: a built-in plugin the effect runs on its own
+// parameters and textures (docs/plugins.md). The file can only name a type compiled into fxview.
+struct PluginDeclaration {
+    std::string name;
+    std::vector<Annotation> annotations;  // Type and the type's own settings
+    SourceLocation where;
+
+    const Annotation* find(const std::string& annotation) const;
+    // The annotation's string; empty when absent. EffectError at the annotation if it is not a string.
+    std::string text(const std::string& annotation) const;
+};
+
 struct Effect {
     std::string path;
     SourceMap sources;          // the effect file and its includes
@@ -109,6 +121,7 @@ struct Effect {
     std::vector<TextureResource> textures;
     std::vector<ShaderBlock> shaders;
     std::vector<Technique> techniques;
+    std::vector<PluginDeclaration> plugins;
     // What the effect may read (its folder, the search roots, folders the user allowed) and how
     // much: textures and data files are loaded under the same rules as its includes.
     FileAccessPolicy access;
@@ -118,6 +131,7 @@ struct Effect {
     const ShaderBlock* find_shader(const std::string& name) const;
     const Technique* find_technique(const std::string& name) const;
     const TextureResource* find_texture(const std::string& name) const;
+    const PluginDeclaration* find_plugin(const std::string& name) const;
 };
 
 }  // namespace fxview::effect

@@ -43,6 +43,22 @@ const TextureResource* Effect::find_texture(const std::string& name) const {
         if (t.name == name) return &t;
     return nullptr;
 }
+const PluginDeclaration* Effect::find_plugin(const std::string& name) const {
+    for (const auto& p : plugins)
+        if (p.name == name) return &p;
+    return nullptr;
+}
+const Annotation* PluginDeclaration::find(const std::string& annotation) const {
+    for (const auto& a : annotations)
+        if (a.name == annotation) return &a;
+    return nullptr;
+}
+std::string PluginDeclaration::text(const std::string& annotation) const {
+    const Annotation* a = find(annotation);
+    if (!a) return {};
+    if (!a->value.is_string) throw EffectError(a->where, "plugin " + name + ": " + annotation + " must be a string");
+    return a->value.text;
+}
 const Technique* Effect::find_technique(const std::string& name) const {
     for (const auto& t : techniques)
         if (t.name == name) return &t;
@@ -73,6 +89,8 @@ public:
                 parse_texture();
             } else if (token.kind == TokenKind::Identifier && token.text == "technique") {
                 parse_technique();
+            } else if (token.kind == TokenKind::Identifier && token.text == "plugin") {
+                parse_plugin();
             } else {
                 parse_glsl_declaration();
             }
@@ -355,6 +373,23 @@ private:
         effect_.shaders.push_back({name.text, effect_.sources.glsl(open.end, close.begin), at(name)});
     }
 
+    // plugin NAME < string Type = "..."; ... >;
+    void parse_plugin() {
+        next();  // plugin
+        PluginDeclaration plugin;
+        const Token name = expect_identifier("a plugin name");
+        plugin.name = name.text;
+        plugin.where = at(name);
+        if (effect_.find_plugin(plugin.name)) fail(name, "plugin '" + plugin.name + "' defined twice");
+        if (effect_.plugins.size() >= kMaxPlugins) fail(name, "more than " + std::to_string(kMaxPlugins) + " plugins in one effect");
+        plugin.annotations = parse_annotations();
+        expect(';', "after the declaration of plugin " + plugin.name);
+        const Annotation* type = plugin.find("Type");
+        if (!type) fail(name, "plugin " + plugin.name + " needs a Type annotation (string Type = \"brdf-fit\")");
+        if (!type->value.is_string) fail(name, "plugin " + plugin.name + ": Type must be a string");
+        effect_.plugins.push_back(std::move(plugin));
+    }
+
     void parse_technique() {
         next();  // technique
         Technique technique;
@@ -513,7 +548,7 @@ private:
 
     // Fixed caps far above any real effect: they keep checks and GLSL compiles of a hostile file short.
     // Each pass is a GLSL program to compile: their number bounds how long `check` can take.
-    static constexpr size_t kMaxDeclarations = 4096, kMaxTechniques = 256, kMaxPasses = 256;
+    static constexpr size_t kMaxDeclarations = 4096, kMaxTechniques = 256, kMaxPasses = 256, kMaxPlugins = 64;
     size_t pass_count_ = 0;
     void count_declaration(const Token& name, size_t declared, const char* what) const {
         if (declared >= kMaxDeclarations) fail(name, "more than " + std::to_string(kMaxDeclarations) + " " + what + " in one effect");

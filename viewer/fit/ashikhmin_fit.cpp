@@ -161,7 +161,7 @@ public:
 
     // The exponent with the lowest profile cost: a log-spaced scan, then golden-section search
     // between the best point's neighbours.
-    double search_exponent() const {
+    double search_exponent(const std::function<void(const FitProgress&)>& on_progress) const {
         const double lo = std::log(kMinExponent), hi = std::log(kMaxExponent);
         const int points = static_cast<int>(std::round(20 * std::log10(kMaxExponent / kMinExponent)));
         const auto profile = [this](double log_ns) { return best_scales(std::exp(log_ns)).cost; };
@@ -172,6 +172,11 @@ public:
             if (cost < best_cost) {
                 best_cost = cost;
                 best = i;
+            }
+            if (on_progress && i % 10 == 0) {
+                const double ns = std::exp(lo + (hi - lo) * best / points);
+                const Scales s = best_scales(ns);
+                on_progress({0.6 * i / points, "search", ns, s.cd, s.cs, best_cost});
             }
         }
         double from = lo + (hi - lo) * std::max(best - 1, 0) / points, to = lo + (hi - lo) * std::min(best + 1, points) / points;
@@ -241,15 +246,23 @@ private:
 
 const char* kChannel[] = {"red", "green", "blue"};
 
-void run_global(const std::vector<Observation>& samples, FitResult& result) {
+void run_global(const std::vector<Observation>& samples, const FitOptions& options, FitResult& result) {
     const GlobalFit problem(samples);
-    const double ns = problem.search_exponent();
+    const double ns = problem.search_exponent(options.on_progress);
     const GlobalFit::Scales scales = problem.best_scales(ns);
     Eigen::VectorXd p(7), lower(7), upper(7);
     p << std::log(ns), scales.cd[0], scales.cd[1], scales.cd[2], scales.cs[0], scales.cs[1], scales.cs[2];
     lower << std::log(kMinExponent), 0, 0, 0, 0, 0, 0;
     upper << std::log(kMaxExponent), 1e300, 1e300, 1e300, 1, 1, 1;
-    const BoundedReport polish = bounded_levenberg_marquardt(problem, p, lower, upper);
+    std::function<void(const Eigen::VectorXd&, double)> after_iteration;
+    int iteration = 0;
+    if (options.on_progress)
+        after_iteration = [&](const Eigen::VectorXd& now, double cost) {
+            const double expected = 30;  // polishes take a few to ~20 iterations here
+            options.on_progress({0.6 + 0.4 * std::min(++iteration / expected, 1.0), "polish",
+                                 std::exp(now[0]), {now[1], now[2], now[3]}, {now[4], now[5], now[6]}, cost});
+        };
+    const BoundedReport polish = bounded_levenberg_marquardt(problem, p, lower, upper, {}, after_iteration);
     result.ns = std::exp(p[0]);
     for (size_t k = 0; k < 3; ++k) {
         result.cd[k] = p[static_cast<Eigen::Index>(1 + k)];
@@ -281,7 +294,11 @@ void run_thesis(const std::vector<Observation>& samples, const FitOptions& optio
     LevenbergMarquardtOptions lm;
     lm.iterations = options.iterations;
     result.stage1 = levenberg_marquardt(problem, a, lm, [&](const Eigen::VectorXd& now) {
-        result.error_per_iteration.push_back(std::sqrt(error_number(samples, -1, now[0], now[1], now[2])));
+        const double e = std::sqrt(error_number(samples, -1, now[0], now[1], now[2]));
+        result.error_per_iteration.push_back(e);
+        if (options.on_progress)
+            options.on_progress({static_cast<double>(result.error_per_iteration.size()) / options.iterations, "stage 1", now[0],
+                                 {now[1], now[1], now[1]}, {now[2], now[2], now[2]}, e * e});
     });
     result.ns = a[0];
     result.mono_cd = a[1];
@@ -403,7 +420,7 @@ FitResult fit_ashikhmin_shirley(const Observations& data, const FitOptions& opti
         result.warnings.push_back(std::to_string(data.masked) + " of " + std::to_string(data.total) +
                                   " samples are unmeasured (negative) and left out");
     if (options.solver == Solver::Global) {
-        run_global(samples, result);
+        run_global(samples, options, result);
         result.mono_cd = (result.cd[0] + result.cd[1] + result.cd[2]) / 3.0;
         result.mono_cs = (result.cs[0] + result.cs[1] + result.cs[2]) / 3.0;
     } else {
@@ -420,7 +437,7 @@ FitResult fit_ashikhmin_shirley(const Observations& data, const FitOptions& opti
     } else {
         // What the thesis' schedule reached, against the global optimum of the same problem.
         FitResult best;
-        run_global(samples, best);
+        run_global(samples, FitOptions{}, best);  // quietly: the reference optimum
         result.optimum_cost = weighted_cost(samples, best.ns, best.cd, best.cs);
         if (result.cost > 1.001 * result.optimum_cost + 1e-300) {
             result.converged = false;

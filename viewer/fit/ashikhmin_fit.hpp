@@ -5,6 +5,7 @@
 // cos θi × (measured − model) / Σw, samples beyond the limit angle left out.
 #pragma once
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,11 +25,22 @@ namespace fxview::fit {
 //   global optimum, so that a stall is never silent.
 enum class Solver { Global, Thesis };
 
+// Where a running fit is, for a progress display (a plugin's worker thread, docs/plugins.md).
+struct FitProgress {
+    double fraction = 0;  // 0..1 of the expected work
+    std::string stage;    // "search", "polish", "stage 1"
+    double ns = 0;
+    std::array<double, 3> cd{}, cs{};  // the current best scales (the thesis' stage 1: the mean's)
+    double cost = 0;                   // the current weighted cost (the thesis' stage 1: e²)
+};
+
 struct FitOptions {
     double limit_deg = 75.0;  // θi and θo beyond it are left out (0..90 in 5° steps in the thesis)
     int iterations = 500;     // the thesis solver's stage-1 iterations
     double start_ns = 25.0, start_cd = 0.2, start_cs = 0.2;  // the thesis solver's start
     Solver solver = Solver::Global;
+    // Called between steps; it may throw (e.g. plugin::Cancelled) to stop the fit.
+    std::function<void(const FitProgress&)> on_progress;
 };
 
 // The search range of ns (the global solver's bounds).

@@ -87,7 +87,8 @@ void problem_normal_equations(const Functor& functor, const Eigen::VectorXd& a, 
 // or a NormalEquationsProblem.
 template <typename Functor>
 BoundedReport bounded_levenberg_marquardt(const Functor& functor, Eigen::VectorXd& a, const Eigen::VectorXd& lower,
-                                          const Eigen::VectorXd& upper, const BoundedOptions& options = {}) {
+                                          const Eigen::VectorXd& upper, const BoundedOptions& options = {},
+                                          const std::function<void(const Eigen::VectorXd&, double cost)>& after_iteration = {}) {
     const Eigen::Index n = a.size();
     a = a.cwiseMax(lower).cwiseMin(upper);
     BoundedReport report;
@@ -114,6 +115,7 @@ BoundedReport bounded_levenberg_marquardt(const Functor& functor, Eigen::VectorX
             }
         }
         ++report.iterations;
+        if (after_iteration) after_iteration(a, cost);  // may throw to cancel
         Eigen::MatrixXd normal = jtj;
         Eigen::VectorXd rhs = -gradient;
         for (Eigen::Index k = 0; k < n; ++k) {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "app/fit_preview.hpp"
+#include "fit/fit_preview.hpp"
 #include "core/error.hpp"
 #include "fit/measurement.hpp"
 #include "image/color_encoding.hpp"
@@ -27,10 +27,10 @@ bool has_fit_parameters(const render::EffectSession& session) {
 
 // The preview image as an 8-bit sRGB texture for ImGui (the viewer's UI draws sRGB bytes).
 void upload_preview(FitPanelState& state, const fit::BrdfGrid& measured, const fit::FitResult& result) {
-    app::PreviewOptions options;
+    fit::PreviewOptions options;
     options.brighten = state.preview_brighten;
     options.limit_deg = state.options.limit_deg;
-    const app::FitPreview fit_preview = app::fit_preview(measured, fit::evaluate_fit(measured, result), options);
+    const fit::FitPreview fit_preview = fit::fit_preview(measured, fit::evaluate_fit(measured, result), options);
     const image::FloatImage& preview = fit_preview.image;
     state.preview_difference_scale = fit_preview.difference_scale;
     std::vector<std::uint8_t> bytes(static_cast<size_t>(preview.width) * preview.height * 4);

@@ -6,7 +6,7 @@
 #include "fit/brdf_grid.hpp"
 #include "image/image.hpp"
 
-namespace fxview::app {
+namespace fxview::fit {
 
 struct PreviewOptions {
     double brighten = 3.0;    // the thesis' ×3 (values are multiplied before display)
@@ -23,6 +23,6 @@ struct FitPreview {
 // one line between θi blocks and a legend strip under the difference panel. The difference panel is
 // false colour: red where the measurement is above the model, blue where it is below, black where
 // they agree, full colour at ±difference_scale (the largest difference inside the fit).
-FitPreview fit_preview(const fit::BrdfGrid& measured, const fit::BrdfGrid& model, const PreviewOptions& options);
+FitPreview fit_preview(const BrdfGrid& measured, const BrdfGrid& model, const PreviewOptions& options);
 
-}  // namespace fxview::app
+}  // namespace fxview::fit

@@ -1,10 +1,10 @@
-#include "app/fit_preview.hpp"
+#include "fit/fit_preview.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-namespace fxview::app {
+namespace fxview::fit {
 namespace {
 
 constexpr float kSeparator = 0.5f;  // mid grey: visible against black data and white highlights
@@ -21,7 +21,7 @@ std::array<float, 3> signed_colour(double t) {
 
 }  // namespace
 
-FitPreview fit_preview(const fit::BrdfGrid& measured, const fit::BrdfGrid& model, const PreviewOptions& options) {
+FitPreview fit_preview(const BrdfGrid& measured, const BrdfGrid& model, const PreviewOptions& options) {
     const int phis = static_cast<int>(measured.phi_out.size());
     const int thetas_in = static_cast<int>(measured.theta_in.size()), thetas_out = static_cast<int>(measured.theta_out.size());
     const int panel = 2 * phis - 1;  // φo = 0 once, in the centre column
@@ -79,4 +79,4 @@ FitPreview fit_preview(const fit::BrdfGrid& measured, const fit::BrdfGrid& model
     return result;
 }
 
-}  // namespace fxview::app
+}  // namespace fxview::fit

@@ -1,0 +1,145 @@
+#include "plugin/brdf_fit_plugin.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "effect/parser.hpp"
+#include "fit/ashikhmin_fit.hpp"
+#include "fit/fit_preview.hpp"
+#include "fit/measurement.hpp"
+#include "render/effect_resources.hpp"
+
+namespace fxview::plugin {
+namespace {
+
+std::vector<std::string> split(const std::string& text) {
+    std::vector<std::string> parts;
+    std::stringstream in(text);
+    for (std::string part; std::getline(in, part, ',');) {
+        const size_t first = part.find_first_not_of(" \t"), last = part.find_last_not_of(" \t");
+        parts.push_back(first == std::string::npos ? "" : part.substr(first, last - first + 1));
+    }
+    return parts;
+}
+
+class BrdfFit final : public Plugin {
+public:
+    BrdfFit(const effect::Effect& effect, const effect::PluginDeclaration& d, const std::vector<std::string>& texture_dirs)
+        : name_(d.name), effect_path_(effect.path), access_(effect.access), limits_(effect.limits), texture_dirs_(texture_dirs) {
+        const auto fail = [&](const std::string& message) { throw fxview::effect::EffectError(d.where, "plugin " + d.name + " (brdf-fit): " + message); };
+        const std::string model = d.text("Model");
+        if (!model.empty() && model != "ashikhmin-fit")
+            fail("Model '" + model + "' is not available (ashikhmin-fit: the thesis' simplified Ashikhmin-Shirley)");
+        data_ = d.text("Data");
+        const effect::Parameter* data = effect.find_parameter(data_);
+        if (data_.empty() || !data || !fxview::effect::is_sampler_type(data->type))
+            fail("Data must name a sampler of the effect holding the measured BRDF (string Data = \"Measured\")");
+        const effect::TextureResource* texture = effect.find_texture(data->texture);
+        if (!texture || texture->files.size() != 1) fail("the sampler " + data_ + " has no data file");
+        texture_ = texture->name;
+        file_ = texture->files[0];
+        const std::vector<std::string> targets = split(d.text("Targets"));
+        static const char* const kTypes[] = {"vec3", "vec3", "float"};
+        if (targets.size() != 3) fail("Targets must name three parameters: cd (vec3), cs (vec3), ns (float)");
+        for (size_t i = 0; i < 3; ++i) {
+            const effect::Parameter* p = effect.find_parameter(targets[i]);
+            if (!p) fail("Targets: the effect has no parameter '" + targets[i] + "'");
+            if (p->type != kTypes[i] || p->array_size != 0 || !p->semantic.empty())
+                fail("Targets: " + targets[i] + " must be a " + kTypes[i] + " without semantic (it receives " +
+                     (i == 0 ? "cd" : i == 1 ? "cs" : "ns") + ")");
+        }
+        cd_ = targets[0];
+        cs_ = targets[1];
+        ns_ = targets[2];
+        technique_ = d.text("Technique");
+        if (!technique_.empty() && !effect.find_technique(technique_)) fail("Technique: the effect has no technique '" + technique_ + "'");
+        if (const effect::Annotation* limit = d.find("Limit")) {
+            if (limit->value.is_string || limit->value.numbers.size() != 1 || !(limit->value.numbers[0] >= 5 && limit->value.numbers[0] <= 90))
+                fail("Limit must be an angle in degrees from 5 to 90");
+            options_.limit_deg = limit->value.numbers[0];
+        }
+        const std::string solver = d.text("Solver");
+        if (solver == "thesis") options_.solver = fit::Solver::Thesis;
+        else if (!solver.empty() && solver != "global") fail("Solver must be \"global\" or \"thesis\"");
+    }
+
+    std::string name() const override { return name_; }
+    std::string type() const override { return "brdf-fit"; }
+    std::string description() const override {
+        char text[200];
+        std::snprintf(text, sizeof text, "fit Ashikhmin-Shirley to the measured BRDF of %s (limit %.0f deg, %s solver)", data_.c_str(),
+                      options_.limit_deg, options_.solver == fit::Solver::Thesis ? "thesis" : "global");
+        return text;
+    }
+    std::vector<std::string> inputs() const override { return {data_}; }
+    std::vector<std::string> outputs() const override { return {cd_, cs_, ns_}; }
+
+    Result run(const effect::ParameterValues& values, const Reporter& reporter) const override {
+        const std::string path = data_path(values);
+        reporter.update({0.0, "reading " + path, {}, 0.0});
+        const fit::Measurement measurement = fit::read_measurement_for_fit(path, limits_);
+        fit::FitOptions options = options_;
+        options.on_progress = [&](const fit::FitProgress& p) {
+            reporter.update({p.fraction, p.stage, {{cd_, {p.cd.begin(), p.cd.end()}}, {cs_, {p.cs.begin(), p.cs.end()}}, {ns_, {p.ns}}}, p.cost});
+        };
+        const fit::FitResult r = fit::fit_ashikhmin_shirley(fit::observations(measurement, options.limit_deg), options);
+
+        Result result;
+        result.parameters = {{cd_, {r.cd.begin(), r.cd.end()}}, {cs_, {r.cs.begin(), r.cs.end()}}, {ns_, {r.ns}}};
+        result.technique = technique_;
+        result.converged = r.converged;
+        result.warnings = r.warnings;
+        if (measurement.merl && r.samples_masked > 0)
+            result.warnings.push_back(std::to_string(r.samples_masked) + " unmeasured (negative) samples left out");
+        for (const double e : r.error_per_iteration) result.cost_per_iteration.push_back(e * e);
+        char line[256];
+        std::snprintf(line, sizeof line, "%d directions inside %.0f deg of %s, %s solver: %s", r.samples_used, options.limit_deg,
+                      path.c_str(), r.solver.c_str(), r.stop_reason.c_str());
+        result.summary.push_back(line);
+        std::snprintf(line, sizeof line, "ns %.4f  cd %.6f %.6f %.6f  cs %.6f %.6f %.6f", r.ns, r.cd[0], r.cd[1], r.cd[2], r.cs[0], r.cs[1],
+                      r.cs[2]);
+        result.summary.push_back(line);
+        std::snprintf(line, sizeof line, "weighted cost %.6g (optimum %.6g)%s", r.cost, r.optimum_cost, r.converged ? "" : "  NOT CONVERGED");
+        result.summary.push_back(line);
+        result.numbers = {{"weighted_cost", r.cost}, {"optimum_cost", r.optimum_cost}, {"samples_used", r.samples_used},
+                          {"samples_masked", static_cast<double>(r.samples_masked)}, {"error_rgb", r.error_rgb}, {"limit_deg", options.limit_deg}};
+        fit::PreviewOptions preview_options;
+        preview_options.limit_deg = options.limit_deg;
+        const fit::FitPreview preview = fit::fit_preview(measurement.grid, fit::evaluate_fit(measurement.grid, r), preview_options);
+        result.preview = preview.image;
+        std::snprintf(line, sizeof line,
+                      "measured | model (x3) | difference (red: measured above the model, blue: below, full colour at %.3g 1/sr); "
+                      "mirror side in each panel's centre; rows outside the fit greyed",
+                      preview.difference_scale);
+        result.preview_caption = line;
+        return result;
+    }
+
+private:
+    // The data file as the renderer would load it: the sampler's override (--set, preset, viewer),
+    // else its ResourceName resolved like any texture; under the effect's file-access policy.
+    std::string data_path(const effect::ParameterValues& values) const {
+        std::string path;
+        if (const auto o = values.textures.find(data_); o != values.textures.end()) path = o->second;
+        else if (const auto t = values.textures.find(texture_); t != values.textures.end()) path = t->second;
+        else path = render::resolve_texture_path(file_, effect_path_, texture_dirs_);
+        access_.require(path, "measured BRDF");
+        return path;
+    }
+
+    std::string name_, effect_path_, data_, texture_, file_, cd_, cs_, ns_, technique_;
+    FileAccessPolicy access_;
+    ResourceLimits limits_;
+    std::vector<std::string> texture_dirs_;
+    fit::FitOptions options_;
+};
+
+}  // namespace
+
+std::unique_ptr<Plugin> create_brdf_fit(const effect::Effect& effect, const effect::PluginDeclaration& declaration,
+                                        const std::vector<std::string>& texture_dirs) {
+    return std::make_unique<BrdfFit>(effect, declaration, texture_dirs);
+}
+
+}  // namespace fxview::plugin
