@@ -124,13 +124,13 @@ TEST_CASE("a cube map becomes the skybox behind the objects") {
     CHECK(texel(after, 48, 48) == texel(before, 48, 48));
 }
 
-TEST_CASE("the Fit tab's fit shows the fitted BRDF: the same pixel as fxview pick with fit's preset") {
+TEST_CASE("the Plugins tab's BRDF fit shows the fitted BRDF: the same pixel as fxview pick with fit's preset") {
     const std::string grid = temp_path("viewer-fit/grid.csv"), preset = temp_path("viewer-fit/preset.json");
     REQUIRE(run("brdf-grid --model ashikhmin-fit --param cd=0.3,0.1,0.1 --param cs=0.6,0.5,0.4 --param ns=30 --out " + grid).exit_code == 0);
     REQUIRE(run("fit " + grid + " --preset " + preset).exit_code == 0);
     const std::string script = temp_path("viewer-fit.txt"), broken = temp_path("viewer-fit/missing.csv");
     const std::string shot = temp_path("viewer-fit/window.png");
-    std::ofstream(script) << "fit " << grid << "\npick 64 64\ntab Fit\nscreenshot " << shot << "\n";
+    std::ofstream(script) << "fit " << grid << "\npick 64 64\ntab Plugins\nscreenshot " << shot << "\n";
     const std::string analytic = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/analytic.fx";
     const Result r = run("view " + analytic + " --window 1024x900 --render-size 128x128 --script " + script + " --frames 2");
     REQUIRE(r.exit_code == 0);
@@ -142,8 +142,9 @@ TEST_CASE("the Fit tab's fit shows the fitted BRDF: the same pixel as fxview pic
     std::string fit_line, pick_line;
     std::getline(lines, fit_line);
     std::getline(lines, pick_line);
-    const auto fitted = nlohmann::json::parse(fit_line)["fit"];
-    CHECK(fitted["ns"].get<double>() == doctest::Approx(30.0).epsilon(1e-6));
+    const auto fitted = nlohmann::json::parse(fit_line)["plugin"];
+    CHECK(fitted["name"] == "FitAshikhminShirley");
+    CHECK(fitted["parameters"]["FitExponent"][0].get<double>() == doctest::Approx(30.0).epsilon(1e-6));
     const Result cli = run("pick " + analytic + " --preset " + preset + " --size 128x128 --at 64,64 --json");
     REQUIRE(cli.exit_code == 0);
     CHECK(nlohmann::json::parse(pick_line)["rgba"] == nlohmann::json::parse(cli.out)["rgba"]);
@@ -153,6 +154,27 @@ TEST_CASE("the Fit tab's fit shows the fitted BRDF: the same pixel as fxview pic
     const Result failed = run("view " + analytic + " --render-size 64x64 --script " + script + " --frames 2");
     CHECK(failed.exit_code == 1);
     CHECK(failed.err.find("missing.csv: no such file") != std::string::npos);
+}
+
+TEST_CASE("measured.fx's brdf-fit plugin gives the same parameters in the viewer as fxview plugin run") {
+    const std::string measured = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/measured.fx";
+    const Result cli = run("plugin run " + measured + " FitAshikhminShirley --json");
+    REQUIRE(cli.exit_code == 0);
+    const auto expected = nlohmann::json::parse(cli.out);
+    CHECK(expected["converged"] == true);
+    const std::string script = temp_path("viewer-plugin.txt");
+    std::ofstream(script) << "plugin FitAshikhminShirley\n";
+    const Result viewer = run("view " + measured + " --render-size 64x64 --script " + script + " --frames 2");
+    REQUIRE(viewer.exit_code == 0);
+    const auto got = nlohmann::json::parse(viewer.out.substr(0, viewer.out.find('\n')))["plugin"];
+    // The same code on the same data and values: bit-identical numbers (JSON writes doubles exactly).
+    CHECK(got["parameters"] == expected["parameters"]);
+
+    // An unknown plugin is a usage error of the script, reported with its line; the viewer goes on.
+    std::ofstream(script) << "plugin Nope\n";
+    const Result bad = run("view " + measured + " --render-size 64x64 --script " + script + " --frames 2");
+    CHECK(bad.exit_code != 0);
+    CHECK(bad.err.find("no plugin 'Nope'") != std::string::npos);
 }
 
 TEST_CASE("an effect refused by the file-access policy opens once its folder is allowed, edits kept") {

@@ -112,4 +112,10 @@ technique PBR { pass p0 { VertexShader = StandardVS; FragmentShader = PBRFS; } }
 technique ModifiedPhong { pass p0 { VertexShader = StandardVS; FragmentShader = ModifiedPhongFS; } }
 technique CookTorranceBeckmann { pass p0 { VertexShader = StandardVS; FragmentShader = CookTorranceBeckmannFS; } }
 technique AshikhminShirley { pass p0 { VertexShader = StandardVS; FragmentShader = AshikhminShirleyFS; } }
+// The fit as a plugin (docs/plugins.md): `fxview plugin run effects/brdf/analytic.fx FitAshikhminShirley`
+// or the viewer's Plugins tab fits the model to a measured BRDF file and shows it with AshikhminShirleyFit.
+plugin FitAshikhminShirley < string Type = "brdf-fit"; string UIName = "Fit Ashikhmin-Shirley to a measured BRDF file";
+                             string DataFile = "sample-brdf.csv"; string Model = "ashikhmin-fit";
+                             string Targets = "FitDiffuse, FitSpecular, FitExponent"; string Technique = "AshikhminShirleyFit"; >;
+
 technique AshikhminShirleyFit { pass p0 { VertexShader = StandardVS; FragmentShader = AshikhminShirleyFitFS; } }

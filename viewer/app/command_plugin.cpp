@@ -40,7 +40,7 @@ Loaded load(const EffectOptions& options) {
 CommandRunner add_plugin_command(CLI::App& app) {
     struct Options {
         EffectOptions effect;
-        std::string name, preview;
+        std::string name, preview, data;
         bool json = false, progress = false;
     };
     auto o = std::make_shared<Options>();
@@ -52,6 +52,7 @@ CommandRunner add_plugin_command(CLI::App& app) {
     CLI::App* run = command->add_subcommand("run", "Run one plugin headless and write its results into the effect's parameters");
     add_effect_options(*run, o->effect);  // the effect file first, then the plugin's name
     run->add_option("name", o->name, "Plugin name (plugin list shows them)")->required();
+    run->add_option("--data", o->data, "Run on this data file instead of the one the plugin reads (its first input)");
     run->add_option("--preview", o->preview, "Write the plugin's preview image (PNG, EXR, PFM), if it makes one");
     run->add_flag("--progress", o->progress, "Print progress to stderr");
     run->add_flag("--json", o->json, "Print the result as JSON");
@@ -86,7 +87,8 @@ CommandRunner add_plugin_command(CLI::App& app) {
         const plugin::Reporter reporter(o->progress ? [](const plugin::Progress& p) {
             std::fprintf(stderr, "%3.0f%% %s  cost %.6g\n", 100.0 * p.fraction, p.stage.c_str(), p.cost);
         } : std::function<void(const plugin::Progress&)>{});
-        const plugin::Result result = plugin->run(loaded.values, reporter);
+        if (!o->data.empty() && plugin->inputs().empty()) throw UsageError("plugin run: " + plugin->name() + " reads no data file");
+        const plugin::Result result = plugin->run(loaded.values, reporter, o->data);
         effect::ParameterValues values = loaded.values;
         const std::vector<std::string> missing = plugin::apply(loaded.effect, values, result);
         const std::string technique = result.technique.empty() ? loaded.technique : result.technique;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 #include "effect/parser.hpp"
@@ -31,14 +32,23 @@ public:
         const std::string model = d.text("Model");
         if (!model.empty() && model != "ashikhmin-fit")
             fail("Model '" + model + "' is not available (ashikhmin-fit: the thesis' simplified Ashikhmin-Shirley)");
+        // The data: the file behind one of the effect's samplers (Data), or a file of its own (DataFile),
+        // which the input `NAME.Data` overrides (the viewer's data-file field, `--set`-like).
         data_ = d.text("Data");
-        const effect::Parameter* data = effect.find_parameter(data_);
-        if (data_.empty() || !data || !fxview::effect::is_sampler_type(data->type))
-            fail("Data must name a sampler of the effect holding the measured BRDF (string Data = \"Measured\")");
-        const effect::TextureResource* texture = effect.find_texture(data->texture);
-        if (!texture || texture->files.size() != 1) fail("the sampler " + data_ + " has no data file");
-        texture_ = texture->name;
-        file_ = texture->files[0];
+        if (!data_.empty()) {
+            const effect::Parameter* data = effect.find_parameter(data_);
+            if (!data || !fxview::effect::is_sampler_type(data->type))
+                fail("Data must name a sampler of the effect holding the measured BRDF (string Data = \"Measured\")");
+            const effect::TextureResource* texture = effect.find_texture(data->texture);
+            if (!texture || texture->files.size() != 1) fail("the sampler " + data_ + " has no data file");
+            texture_ = texture->name;
+            file_ = texture->files[0];
+        } else {
+            file_ = d.text("DataFile");
+            if (file_.empty()) fail("name the measured BRDF: string Data = \"SAMPLER\" or string DataFile = \"FILE\"");
+            data_ = d.name + ".Data";
+            texture_ = data_;
+        }
         const std::vector<std::string> targets = split(d.text("Targets"));
         static const char* const kTypes[] = {"vec3", "vec3", "float"};
         if (targets.size() != 3) fail("Targets must name three parameters: cd (vec3), cs (vec3), ns (float)");
@@ -75,8 +85,10 @@ public:
     std::vector<std::string> inputs() const override { return {data_}; }
     std::vector<std::string> outputs() const override { return {cd_, cs_, ns_}; }
 
-    Result run(const effect::ParameterValues& values, const Reporter& reporter) const override {
-        const std::string path = data_path(values);
+    Result run(const effect::ParameterValues& values, const Reporter& reporter, const std::string& user_file) const override {
+        const std::string path = user_file.empty() ? data_path(values) : user_file;
+        std::error_code error;
+        if (!std::filesystem::is_regular_file(path, error)) throw Error(path + ": no such file");
         reporter.update({0.0, "reading " + path, {}, 0.0});
         const fit::Measurement measurement = fit::read_measurement_for_fit(path, limits_);
         fit::FitOptions options = options_;

@@ -67,8 +67,11 @@ public:
     virtual std::vector<std::string> inputs() const = 0;   // parameters and samplers it reads
     virtual std::vector<std::string> outputs() const = 0;  // parameters it writes
     // Runs on a snapshot of the values; must not touch anything shared (it may run on a worker
-    // thread while the effect is edited or reloaded). Throws Error for bad data, Cancelled.
-    virtual Result run(const effect::ParameterValues& values, const Reporter& reporter) const = 0;
+    // thread while the effect is edited or reloaded). `user_file`, when not empty, replaces the file
+    // of its first input: a file the user named (CLI --data, the viewer's field), so the effect's
+    // file-access policy, which guards what effect files name, does not apply to it. Throws Error
+    // for bad data, Cancelled.
+    virtual Result run(const effect::ParameterValues& values, const Reporter& reporter, const std::string& user_file = {}) const = 0;
 };
 
 // The plugin an effect declares, checked against the effect (targets exist and have the right

@@ -26,7 +26,7 @@
 #include "scene/shapes.hpp"
 #include "ui/display_pass.hpp"
 #include "ui/imgui_layer.hpp"
-#include "ui/fit_panel.hpp"
+#include "ui/plugin_panel.hpp"
 #include "ui/parameter_panel.hpp"
 
 namespace fxview::ui {
@@ -136,6 +136,7 @@ public:
                     reload_error_ = error ? *error : std::string();
                 }
             }
+            plugin_panel_.update(session_.get());  // a running plugin's live parameters; its result when done
             if (target_) run_script_step();  // actions need the render view, made by the first frame
             frame();
             ++frame_number_;
@@ -460,8 +461,8 @@ private:
                 draw_view_tab();
                 ImGui::EndTabItem();
             }
-            if (ImGui::BeginTabItem("Fit", nullptr, tab_flags("Fit"))) {
-                draw_fit_panel(fit_panel_, session_.get());
+            if (ImGui::BeginTabItem("Plugins", nullptr, tab_flags("Plugins"))) {
+                plugin_panel_.draw(session_.get());
                 ImGui::EndTabItem();
             }
             ImGui::EndTabBar();
@@ -823,17 +824,23 @@ private:
             skybox_name_ = args[0] == "off" ? "" : args[0];
             if (!skybox_name_.empty() && !skybox_texture()) throw UsageError("no cube map texture '" + args[0] + "' in the effect");
         } else if (a.verb == "tab") {
-            static const std::set<std::string> tabs = {"Effect", "Scene", "Textures", "Pick", "View", "Fit"};
-            if (!tabs.count(args[0])) throw UsageError("no tab '" + args[0] + "' (Effect, Scene, Textures, Pick, View, Fit)");
+            static const std::set<std::string> tabs = {"Effect", "Scene", "Textures", "Pick", "View", "Plugins"};
+            if (!tabs.count(args[0])) throw UsageError("no tab '" + args[0] + "' (Effect, Scene, Textures, Pick, View, Plugins)");
             requested_tab_ = args[0];
             wait_frames_ = 1;
-        } else if (a.verb == "fit") {
-            std::snprintf(fit_panel_.path, sizeof fit_panel_.path, "%s", args[0].c_str());
-            if (!run_fit(fit_panel_, session_.get())) throw Error(fit_panel_.error);
-            const fit::FitResult& r = *fit_panel_.result;
-            for (auto& o : objects_) o.technique = session_ ? session_->technique() : o.technique;
-            std::cout << nlohmann::json{{"fit", {{"ns", r.ns}, {"cd", r.cd}, {"cs", r.cs}, {"error_rgb", r.error_rgb}, {"converged", r.converged},
-                                                    {"warnings", r.warnings}}}}.dump() << std::endl;
+        } else if (a.verb == "plugin" || a.verb == "fit") {
+            // plugin NAME: runs the effect's plugin as the Run button does, and waits for it.
+            // fit FILE: the effect's first plugin on that data file (the Data file field).
+            const std::string name = a.verb == "plugin" ? args[0] : "", file = a.verb == "fit" ? args[0] : "";
+            if (!plugin_panel_.start(session_.get(), name, file)) throw UsageError(plugin_panel_.error());
+            plugin_panel_.wait(session_.get());
+            if (!plugin_panel_.result()) throw Error(plugin_panel_.last_plugin() + ": " + plugin_panel_.error());
+            const plugin::Result& r = *plugin_panel_.result();
+            for (auto& o : objects_) o.technique = session_->technique();
+            std::cout << nlohmann::json{{"plugin", {{"name", plugin_panel_.last_plugin()}, {"parameters", r.parameters},
+                                                       {"converged", r.converged}, {"warnings", r.warnings}}}}
+                             .dump()
+                      << std::endl;
         } else if (a.verb == "allow-path") {
             allow_folder(args[0]);
         } else if (a.verb == "frames") {
@@ -865,7 +872,7 @@ private:
     int samples_ = 0, sampler_choice_ = 0, frame_number_ = 0, exit_code_ = 0;
     double frame_seconds_ = 0, gpu_ms_ = 0;
     Pick pick_;
-    FitPanelState fit_panel_;
+    PluginPanel plugin_panel_;
     std::string requested_tab_;
     std::vector<std::string> browser_files_, pending_window_shots_;
     char path_input_[512] = "effects/debug.fx", preset_input_[512] = "preset.json", obj_input_[512] = "model.obj",

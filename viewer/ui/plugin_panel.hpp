@@ -1,0 +1,72 @@
+// The Plugins tab (docs/plugins.md): the plugins the current effect declares, each run on a worker
+// thread so that the viewer stays responsive, with a progress bar, a Cancel button, the parameters
+// and picture updated live as the plugin reports, the cost per iteration on a log axis, and the
+// plugin's preview image. A failed or cancelled run leaves the parameters as they were before it.
+#pragma once
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "gl/objects.hpp"
+#include "plugin/plugin.hpp"
+#include "render/effect_session.hpp"
+
+namespace fxview::ui {
+
+// What the worker thread and the UI thread share; guarded by `mutex` apart from `cancel`.
+struct PluginRun {
+    std::mutex mutex;
+    std::optional<plugin::Progress> progress;  // the latest report
+    bool fresh = false;                        // a report the UI has not applied yet
+    std::vector<double> curve;                 // cost per report
+    std::optional<plugin::Result> result;
+    std::string error;
+    bool done = false;
+    std::atomic<bool> cancel{false};
+};
+
+class PluginPanel {
+public:
+    PluginPanel() = default;
+    PluginPanel(const PluginPanel&) = delete;
+    PluginPanel& operator=(const PluginPanel&) = delete;
+    ~PluginPanel();  // cancels and joins a running plugin
+
+    // Once a frame: rebuilds the list after a reload, applies live progress and a finished result
+    // to the session's parameters.
+    void update(render::EffectSession* session);
+    void draw(render::EffectSession* session);
+    // Starts the named plugin (the first when empty) on a worker thread; `user_file` replaces its
+    // data file. Returns false with error() set when it cannot start.
+    bool start(render::EffectSession* session, const std::string& name, const std::string& user_file = {});
+    // Blocks until the running plugin has finished and applies its result (scripts, tests).
+    void wait(render::EffectSession* session);
+    bool running() const { return run_ && worker_.joinable(); }
+    const std::optional<plugin::Result>& result() const { return result_; }
+    const std::string& error() const { return error_; }
+    const std::string& last_plugin() const { return last_plugin_; }
+
+private:
+    void finish(render::EffectSession* session);
+    void upload_preview(const image::FloatImage& preview);
+
+    const effect::Effect* effect_ = nullptr;  // what `plugins_` were made for
+    std::vector<std::unique_ptr<plugin::Plugin>> plugins_;
+    std::string plugins_error_;
+    int selected_ = 0;
+    char data_file_[512] = "";
+    std::shared_ptr<PluginRun> run_;
+    std::thread worker_;
+    effect::ParameterValues before_;  // restored when a run fails or is cancelled
+    std::string last_plugin_, error_;
+    std::optional<plugin::Result> result_;
+    std::vector<double> curve_;
+    gl::Texture preview_;
+    int preview_width_ = 0, preview_height_ = 0;
+};
+
+}  // namespace fxview::ui
