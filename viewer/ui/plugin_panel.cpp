@@ -27,7 +27,8 @@ void draw_cost_curve(const std::vector<double>& costs) {
     ImGui::Text("cost (log scale): 1e%+.0f at the top, 1e%+.0f at the bottom; %zu steps", top, bottom, curve.size());
     char overlay[64];
     std::snprintf(overlay, sizeof overlay, "last %.4g", std::pow(10.0, curve.back()));
-    ImGui::PlotLines("##cost", curve.data(), static_cast<int>(curve.size()), 0, overlay, bottom, top, ImVec2(-1, 90));
+    ImGui::PlotLines("##cost", curve.data(), static_cast<int>(curve.size()), 0, overlay, bottom, top,
+                     ImVec2(ImGui::GetContentRegionAvail().x, 90));
     ImGui::TextDisabled("x: reports of the solver (search, then polish)");
 }
 
