@@ -7,7 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
+#include <iterator>
 #include <cstdint>
 #include <tuple>
 #include <cstdio>
@@ -169,6 +171,62 @@ TEST_CASE("check: the malformed corpus exits 1 with file:line messages, never a 
     }
     CHECK(files >= 25);
     CHECK(run(std::string("check ") + FXVIEW_SOURCE_EFFECTS_DIR + "/debug.fx").exit_code == 0);
+}
+
+TEST_CASE("plugin: bindings checked at the declaration's line; run exits 2 for an unknown name, 1 for bad data") {
+    const std::string measured = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/measured.fx";
+    std::ifstream in(measured);
+    const std::string source((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const size_t at = source.find("\nplugin FitAshikhminShirley") + 1;  // the declaration, not a comment naming it
+    REQUIRE(at != 0);
+    const int line = static_cast<int>(std::count(source.begin(), source.begin() + static_cast<long>(at), '\n')) + 1;
+    // Each broken binding, written into a copy of measured.fx (its includes come from effects/lib).
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"\"brdf-fit\"", "\"no-such-type\""},                        // unknown Type
+        {"FitDiffuse, FitSpecular, FitExponent", "FitDiffuse, Nope, FitExponent"},  // missing target
+        {"FitDiffuse, FitSpecular, FitExponent", "FitExponent, FitSpecular, FitDiffuse"},  // wrong types
+        {"string Data = \"Measured\"", "string Data = \"LightIrradiance\""},  // not a sampler
+        {"float Limit = 75", "float Limit = 120"},
+        {"string Technique = \"Fitted\"", "string Technique = \"Nope\""}};
+    const std::string copy = temp_path("test-plugin-binding.fx");
+    for (const auto& [from, to] : cases) {
+        std::string text = source;
+        const size_t found = text.find(from, at);
+        REQUIRE(found != std::string::npos);
+        text.replace(found, from.size(), to);
+        std::ofstream(copy) << text;
+        const Result r = run("check " + copy);
+        CAPTURE(to);
+        CAPTURE(r.out);
+        CHECK(r.exit_code == 1);
+        CHECK(r.out.find("test-plugin-binding.fx:" + std::to_string(line) + ": plugin FitAshikhminShirley") != std::string::npos);
+    }
+
+    CHECK(run("check " + measured).out.find("1 plugins") != std::string::npos);
+    const Result listed = run("plugin list " + measured + " --json");
+    REQUIRE(listed.exit_code == 0);
+    CHECK(nlohmann::json::parse(listed.out)[0]["outputs"] == nlohmann::json{"FitDiffuse", "FitSpecular", "FitExponent"});
+    CHECK(run("plugin run " + measured + " Nope").exit_code == 2);
+    const Result missing = run("plugin run " + measured + " FitAshikhminShirley --data " + temp_path("absent.csv"));
+    CHECK(missing.exit_code == 1);
+    CHECK(missing.err.find("absent.csv: no such file") != std::string::npos);
+
+    // The plugin and the direct command solve the same problem: the same parameters.
+    const std::string grid = temp_path("plugin-grid.csv"), preset = temp_path("plugin-preset.json");
+    REQUIRE(run("brdf-grid --model pbr --param base=0.04 --param metallic=0 --param roughness=0.2 --out " + grid).exit_code == 0);
+    const Result direct = run("fit " + grid + " --json");
+    const Result plugin = run("plugin run " + measured + " FitAshikhminShirley --data " + grid + " --json --save-preset " + preset);
+    REQUIRE(direct.exit_code == 0);
+    REQUIRE(plugin.exit_code == 0);
+    const auto d = nlohmann::json::parse(direct.out), p = nlohmann::json::parse(plugin.out);
+    CHECK(p["parameters"]["FitExponent"][0] == d["ns"]);
+    CHECK(p["parameters"]["FitDiffuse"] == d["cd"]);
+    CHECK(p["parameters"]["FitSpecular"] == d["cs"]);
+    CHECK(p["technique"] == "Fitted");
+    std::ifstream saved(preset);
+    const auto preset_json = nlohmann::json::parse(saved);
+    CHECK(preset_json["technique"] == "Fitted");
+    CHECK(preset_json["parameters"]["FitSpecular"] == d["cs"]);
 }
 
 TEST_CASE("render EFFECT --technique Normals matches the built-in normal image; bad technique is exit 2") {
