@@ -828,6 +828,25 @@ private:
             if (!tabs.count(args[0])) throw UsageError("no tab '" + args[0] + "' (Effect, Scene, Textures, Pick, View, Plugins)");
             requested_tab_ = args[0];
             wait_frames_ = 1;
+        } else if (a.verb == "plugin-start") {
+            // Starts a plugin and goes on: the window keeps drawing while it runs (plugin-wait).
+            if (!plugin_panel_.start(session_.get(), args[0])) throw UsageError(plugin_panel_.error());
+            plugin_start_frame_ = frame_number_;
+            plugin_start_time_ = std::chrono::steady_clock::now();
+        } else if (a.verb == "plugin-wait") {
+            if (plugin_panel_.running()) {  // retried next frame; the frames drawn meanwhile are counted
+                --script_position_;
+                wait_frames_ = 1;
+                return;
+            }
+            if (!plugin_panel_.result()) throw Error(plugin_panel_.last_plugin() + ": " + plugin_panel_.error());
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - plugin_start_time_).count();
+            const int frames = frame_number_ - plugin_start_frame_;
+            std::cout << nlohmann::json{{"plugin", {{"name", plugin_panel_.last_plugin()}, {"parameters", plugin_panel_.result()->parameters},
+                                                       {"converged", plugin_panel_.result()->converged}}},
+                                        {"frames_while_running", frames}, {"seconds", seconds}}
+                             .dump()
+                      << std::endl;
         } else if (a.verb == "plugin" || a.verb == "fit") {
             // plugin NAME: runs the effect's plugin as the Run button does, and waits for it.
             // fit FILE: the effect's first plugin on that data file (the Data file field).
@@ -873,6 +892,8 @@ private:
     double frame_seconds_ = 0, gpu_ms_ = 0;
     Pick pick_;
     PluginPanel plugin_panel_;
+    int plugin_start_frame_ = 0;  // plugin-start: frames drawn while the plugin runs
+    std::chrono::steady_clock::time_point plugin_start_time_;
     std::string requested_tab_;
     std::vector<std::string> browser_files_, pending_window_shots_;
     char path_input_[512] = "effects/debug.fx", preset_input_[512] = "preset.json", obj_input_[512] = "model.obj",
