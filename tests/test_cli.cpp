@@ -229,6 +229,39 @@ TEST_CASE("plugin: bindings checked at the declaration's line; run exits 2 for a
     CHECK(preset_json["parameters"]["FitSpecular"] == d["cs"]);
 }
 
+TEST_CASE("film-fit plugin: the thickness of a film the GPU rendered comes back from its colour") {
+    const std::string thinfilm = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/thinfilm.fx";
+    for (const int thickness : {120, 280, 450, 600}) {
+        // The GLSL FresnelExact renders the film; the plugin inverts its colour with the C++
+        // transfer-matrix reflectance: two implementations. The pixel next to the sphere's centre
+        // sees the film at cos θ ≈ 1 − 2e-4, which shortens the optical path by d·1e-4 < 0.1 nm;
+        // 0.5 nm also covers the search's 1e-4 nm bracket and float rounding of the rendered colour.
+        const Result pick = run("pick " + thinfilm + " -t FresnelExact --set Thickness=" + std::to_string(thickness) +
+                                " --set Variation=0 --mesh sphere --size 64x64 --at 32,32 --json");
+        REQUIRE(pick.exit_code == 0);
+        const auto rgba = nlohmann::json::parse(pick.out)["rgba"];
+        char target[128];
+        std::snprintf(target, sizeof target, "%.9g,%.9g,%.9g", rgba[0].get<double>(), rgba[1].get<double>(), rgba[2].get<double>());
+        const Result fit = run("plugin run " + thinfilm + " ThicknessFromColour --set TargetColour=" + target + " --json");
+        CAPTURE(thickness);
+        CAPTURE(fit.out);
+        REQUIRE(fit.exit_code == 0);
+        const auto result = nlohmann::json::parse(fit.out);
+        CHECK(result["parameters"]["Thickness"][0].get<double>() == doctest::Approx(thickness).epsilon(0.5 / thickness));
+        CHECK(result["numbers"]["delta_uv"].get<double>() < 1e-3);
+        CHECK(result["converged"] == true);
+    }
+    // Near-white colours belong to many thicknesses (thick films wash out): all are listed.
+    const Result white = run("plugin run " + thinfilm + " ThicknessFromColour --set TargetColour=1,1,1 --json");
+    REQUIRE(white.exit_code == 0);
+    CHECK(nlohmann::json::parse(white.out)["numbers"]["alternatives"].get<double>() >= 3);
+    // A colour no film of these indices makes is reported as not reached; black has no chromaticity.
+    const Result red = run("plugin run " + thinfilm + " ThicknessFromColour --set TargetColour=1,0,0 --json");
+    REQUIRE(red.exit_code == 0);
+    CHECK(nlohmann::json::parse(red.out)["converged"] == false);
+    CHECK(run("plugin run " + thinfilm + " ThicknessFromColour --set TargetColour=0,0,0").exit_code == 2);
+}
+
 TEST_CASE("render EFFECT --technique Normals matches the built-in normal image; bad technique is exit 2") {
     const std::string effect_image = temp_path("fx-normals.pfm"), builtin_image = temp_path("builtin-normals.pfm");
     const std::string debug_fx = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/debug.fx";

@@ -388,6 +388,18 @@ GLSLShader MultiLayerFasterFS {
     }
 }
 
+// Thickness from a colour (docs/plugins.md): the Plugins tab or `fxview plugin run
+// effects/spectral/thinfilm.fx ThicknessFromColour --set TargetColour=R,G,B` finds the thickness whose
+// interference colour at normal incidence has the target's chromaticity (Airy's exact reflectance),
+// and lists the other interference orders that match as well.
+uniform vec3 TargetColour < string UIName = "Target colour"; string UIWidget = "color"; string UIGroup = "Thickness from colour";
+                            string UIHelp = "Linear RGB of an observed film colour (e.g. a picked pixel); its chromaticity is matched, not its brightness"; > = {0.10, 0.22, 0.35};
+plugin ThicknessFromColour < string Type = "film-fit"; string UIName = "Thickness from a colour";
+                             string Target = "TargetColour"; string Vary = "Thickness";
+                             string OuterIndex = "OuterIndex"; string FilmIndex = "FilmIndex"; string SubstrateIndex = "SubstrateIndex";
+                             string SubstrateKappa = "SubstrateKappa"; string Light = "LightSpectrum"; string Observer = "Observer";
+                             string Lower = "Lower"; string Upper = "Upper"; string Technique = "FresnelExact"; float Angle = 0; >;
+
 technique PathDifference { pass p0 { VertexShader = StandardVS; FragmentShader = PathDifferenceFS; } }
 technique Fresnel { pass p0 { VertexShader = StandardVS; FragmentShader = FresnelFS; } }
 technique FresnelFaster { pass p0 { VertexShader = StandardVS; FragmentShader = FresnelFasterFS; } }

@@ -1,6 +1,7 @@
 #include "plugin/plugin.hpp"
 
 #include "plugin/brdf_fit_plugin.hpp"
+#include "plugin/film_fit_plugin.hpp"
 
 namespace fxview::plugin {
 namespace {
@@ -9,7 +10,7 @@ using Factory = std::unique_ptr<Plugin> (*)(const effect::Effect&, const effect:
 
 // Every type an effect may name: compiled in, nothing loaded at run time.
 const std::map<std::string, Factory>& registry() {
-    static const std::map<std::string, Factory> factories = {{"brdf-fit", &create_brdf_fit}};
+    static const std::map<std::string, Factory> factories = {{"brdf-fit", &create_brdf_fit}, {"film-fit", &create_film_fit}};
     return factories;
 }
 

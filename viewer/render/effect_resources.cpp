@@ -94,14 +94,10 @@ texture::PixelFormat storage_format(effect::TextureStorage storage, texture::Pix
 
 }  // namespace
 
-namespace {
-
 std::string spectral_library_path() {
     const char* override_dir = std::getenv("FXVIEW_SPECTRA_DIR");
     return std::string(override_dir ? override_dir : FXVIEW_SOURCE_SPECTRA_DIR) + "/library.txt";
 }
-
-}  // namespace
 
 void EffectResources::generate(const effect::TextureResource& resource) {
     const std::string& what = resource.files[0];

@@ -58,6 +58,9 @@ private:
     std::map<std::vector<GLenum>, gl::Sampler> samplers_;
 };
 
+// spectra/library.txt of the source tree (or $FXVIEW_SPECTRA_DIR): the library `spectral:` textures use.
+std::string spectral_library_path();
+
 // The file a texture name refers to: absolute, next to the effect, or in one of the folders.
 std::string resolve_texture_path(const std::string& file, const std::string& effect_path,
                                  const std::vector<std::string>& texture_dirs);
