@@ -416,6 +416,9 @@ TEST_CASE("fit and brdf-grid reject bad input: exit 2 for arguments, 1 naming fi
     CHECK(run("brdf-grid --model nonsense --out " + temp_path("x.csv")).exit_code == 2);
     CHECK(run("brdf-grid --model pbr --param shininess=3 --out " + temp_path("x.csv")).exit_code == 2);
     CHECK(run("fit " + temp_path("x.csv") + " --limit 95").exit_code == 2);
+    CHECK(run("fit " + temp_path("x.csv") + " --solver thesis --residual cbrt").exit_code == 2);
+    CHECK(run("fit " + temp_path("x.csv") + " --loss huber --loss-scale -1").exit_code == 2);
+    CHECK(run("fit " + temp_path("x.csv") + " --residual sqrt").exit_code == 2);
     const std::string broken = temp_path("broken-grid.csv");
     std::ofstream(broken) << "theta_in_deg,theta_out_deg,phi_out_deg,r,g,b\n0,0,0,1,1\n";
     const Result r = run("fit " + broken);

@@ -131,7 +131,7 @@ std::function<std::array<double, 3>(const glm::dvec3&, const glm::dvec3&)> analy
 
 CommandRunner add_fit_command(CLI::App& app) {
     struct Options {
-        std::string data, out, preset, preview, progress, solver = "global";
+        std::string data, out, preset, preview, progress, solver = "global", residual = "linear", loss = "squared";
         fit::FitOptions fit;
         fit::PreviewOptions preview_options;
         bool json = false;
@@ -147,6 +147,14 @@ CommandRunner add_fit_command(CLI::App& app) {
                         "global: the optimum of the weighted least squares (bounded: ns > 0, cd >= 0, 0 <= cs <= 1); "
                         "thesis: seed 000's two-stage Levenberg-Marquardt from --start-* (may stall; reported)")
         ->capture_default_str()->check(CLI::IsMember({"global", "thesis"}));
+    command->add_option("--residual", o->residual,
+                        "linear (the thesis'), cbrt or log: compress the residual so that the highlight's peak does not outweigh the rest "
+                        "(global solver)")
+        ->capture_default_str()->check(CLI::IsMember({"linear", "cbrt", "log"}));
+    command->add_option("--loss", o->loss, "squared (least squares), huber or cauchy: robust against outliers (global solver)")
+        ->capture_default_str()->check(CLI::IsMember({"squared", "huber", "cauchy"}));
+    command->add_option("--loss-scale", o->fit.loss_scale, "Robust losses: the residual where they turn (0: 1.345 x the residuals' robust sigma)")
+        ->capture_default_str();
     command->add_option("--start-ns", o->fit.start_ns, "Thesis solver: starting exponent (the thesis starts low: 25-50)")->capture_default_str();
     command->add_option("--start-cd", o->fit.start_cd, "Thesis solver: starting diffuse weight")->capture_default_str();
     command->add_option("--start-cs", o->fit.start_cs, "Thesis solver: starting specular weight")->capture_default_str();
@@ -159,6 +167,8 @@ CommandRunner add_fit_command(CLI::App& app) {
     command->add_flag("--json", o->json, "Print the result as JSON");
     return [o] {
         o->fit.solver = o->solver == "thesis" ? fit::Solver::Thesis : fit::Solver::Global;
+        o->fit.residual = o->residual == "cbrt" ? fit::Residual::CubeRoot : o->residual == "log" ? fit::Residual::Log : fit::Residual::Linear;
+        o->fit.loss = o->loss == "huber" ? fit::Loss::Huber : o->loss == "cauchy" ? fit::Loss::Cauchy : fit::Loss::Squared;
         fit::validate(o->fit);  // before reading the data: a bad start is a usage error (exit 2)
         const fit::Measurement measurement = fit::read_measurement_for_fit(o->data);
         const fit::BrdfGrid& measured = measurement.grid;
@@ -189,7 +199,8 @@ CommandRunner add_fit_command(CLI::App& app) {
                                         {"rs", r.rs}, {"rd_renderer", r.rd_renderer}, {"cs_renderer", r.cs_renderer},
                                         {"error_mono", r.error_mono}, {"error_rgb", r.error_rgb}, {"seconds", seconds},
                                         {"solver", r.solver}, {"stop_reason", r.stop_reason}, {"converged", r.converged},
-                                        {"weighted_cost", r.cost}, {"optimum_cost", r.optimum_cost}, {"warnings", r.warnings}};
+                                        {"weighted_cost", r.cost}, {"optimum_cost", r.optimum_cost}, {"warnings", r.warnings},
+                               {"residual", r.residual}, {"loss", r.loss}, {"loss_scale", r.loss_scale_used}, {"reweightings", r.reweightings}};
             if (!o->preview.empty()) out["preview_difference_scale"] = preview_scale;
             std::cout << out.dump() << "\n";
         } else {
@@ -199,7 +210,11 @@ CommandRunner add_fit_command(CLI::App& app) {
                 std::printf("stage 1 (mean of RGB): ns %.4f  cd %.6f  cs %.6f  e %.6g\n", r.ns, r.mono_cd, r.mono_cs, r.error_mono);
             std::printf("%s: ns %.4f  cd %.6f %.6f %.6f  cs %.6f %.6f %.6f  e %.6g\n", r.solver == "thesis" ? "stage 2 (per channel)" : "fit",
                         r.ns, r.cd[0], r.cd[1], r.cd[2], r.cs[0], r.cs[1], r.cs[2], r.error_rgb);
-            std::printf("weighted cost %.6g (optimum %.6g)%s\n", r.cost, r.optimum_cost, r.converged ? "" : "  NOT CONVERGED");
+            if (r.residual == "linear" && r.loss == "squared")
+                std::printf("weighted cost %.6g (optimum %.6g)%s\n", r.cost, r.optimum_cost, r.converged ? "" : "  NOT CONVERGED");
+            else
+                std::printf("weighted cost %.6g (%s residual, %s loss, scale %.3g)%s\n", r.cost, r.residual.c_str(), r.loss.c_str(),
+                            r.loss_scale_used, r.converged ? "" : "  NOT CONVERGED");
             std::printf("renderer form: Rs %.6f  Rd %.6f %.6f %.6f  cs' %.6f %.6f %.6f\n", r.rs, r.rd_renderer[0], r.rd_renderer[1],
                         r.rd_renderer[2], r.cs_renderer[0], r.cs_renderer[1], r.cs_renderer[2]);
             if (!o->preview.empty())

@@ -3,6 +3,7 @@
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <limits>
 #include <string>
@@ -74,11 +75,31 @@ double weighted_cost(const std::vector<Observation>& samples, double ns, const s
     return sum;
 }
 
+// The residual's scale g and its slope: g(y) − g(f) is what is fitted.
+struct Transform {
+    Residual kind = Residual::Linear;
+    double epsilon = 0;
+    double value(double x) const {
+        switch (kind) {
+            case Residual::CubeRoot: return std::cbrt(x + epsilon);
+            case Residual::Log: return std::log(std::max(x, 0.0) + epsilon);
+            default: return x;
+        }
+    }
+    double slope(double x) const {
+        switch (kind) {
+            case Residual::CubeRoot: return 1.0 / (3.0 * std::pow(std::cbrt(x + epsilon), 2.0));
+            case Residual::Log: return 1.0 / (std::max(x, 0.0) + epsilon);
+            default: return 1.0;
+        }
+    }
+};
+
 // The global solver. The lobe at sample j is (ns + 1) g_j (n·h_j)^ns: g_j and ln(n·h_j) are kept so
 // that a new ns costs one exp per sample.
 class GlobalFit {
 public:
-    explicit GlobalFit(const std::vector<Observation>& samples) : samples_(samples) {
+    explicit GlobalFit(const std::vector<Observation>& samples, Transform transform = {}) : samples_(samples), transform_(transform) {
         for (const Observation& s : samples) {
             const glm::dvec3 h = glm::normalize(s.l + s.v);
             log_n_dot_h_.push_back(std::log(std::max(h.z, 1e-4)));
@@ -214,12 +235,14 @@ public:
                 const double d_lobe = l * ns * (1.0 / (ns + 1.0) + log_n_dot_h_[j]);
                 for (size_t k = 0; k < 3; ++k) {
                     const auto ki = static_cast<Eigen::Index>(k);
-                    const double r = w * (samples_[j].value[k] - (p[1 + ki] / kPi + p[4 + ki] * l));
+                    const double f = p[1 + ki] / kPi + p[4 + ki] * l;
+                    const double r = w * (transform_.value(samples_[j].value[k]) - transform_.value(f));
                     part.cost += r * r;
                     if (!derivatives) continue;
-                    // The row's three non-zeros: ∂r/∂ln ns, ∂r/∂cd_k, ∂r/∂cs_k.
+                    // The row's three non-zeros: ∂r/∂ln ns, ∂r/∂cd_k, ∂r/∂cs_k (times g'(f) for a compressed residual).
                     const std::array<Eigen::Index, 3> column = {0, 1 + ki, 4 + ki};
-                    const std::array<double, 3> value = {-w * p[4 + ki] * d_lobe, -w / kPi, -w * l};
+                    const double wg = w * transform_.slope(f);
+                    const std::array<double, 3> value = {-wg * p[4 + ki] * d_lobe, -wg / kPi, -wg * l};
                     for (size_t x = 0; x < 3; ++x) {
                         part.jtr[column[x]] += value[x] * r;
                         for (size_t y = 0; y < 3; ++y) part.jtj(column[x], column[y]) += value[x] * value[y];
@@ -241,17 +264,27 @@ public:
 
 private:
     const std::vector<Observation>& samples_;
+    Transform transform_;
     std::vector<double> log_n_dot_h_, geometry_;
 };
 
 const char* kChannel[] = {"red", "green", "blue"};
 
-void run_global(const std::vector<Observation>& samples, const FitOptions& options, FitResult& result) {
-    const GlobalFit problem(samples);
-    const double ns = problem.search_exponent(options.on_progress);
-    const GlobalFit::Scales scales = problem.best_scales(ns);
+// The global optimum of the linear problem; with `polish_transform` set, the polish minimises the
+// compressed residual instead, starting from `start` (the reweighted solution) when given.
+void run_global(const std::vector<Observation>& samples, const FitOptions& options, FitResult& result,
+                const Transform& polish_transform = {}, const FitResult* start = nullptr) {
+    const GlobalFit linear(samples);
+    const GlobalFit compressed(samples, polish_transform);
+    const GlobalFit& problem = polish_transform.kind == Residual::Linear ? linear : compressed;
     Eigen::VectorXd p(7), lower(7), upper(7);
-    p << std::log(ns), scales.cd[0], scales.cd[1], scales.cd[2], scales.cs[0], scales.cs[1], scales.cs[2];
+    if (start) {
+        p << std::log(start->ns), start->cd[0], start->cd[1], start->cd[2], start->cs[0], start->cs[1], start->cs[2];
+    } else {
+        const double ns = linear.search_exponent(options.on_progress);
+        const GlobalFit::Scales scales = linear.best_scales(ns);
+        p << std::log(ns), scales.cd[0], scales.cd[1], scales.cd[2], scales.cs[0], scales.cs[1], scales.cs[2];
+    }
     lower << std::log(kMinExponent), 0, 0, 0, 0, 0, 0;
     upper << std::log(kMaxExponent), 1e300, 1e300, 1e300, 1, 1, 1;
     std::function<void(const Eigen::VectorXd&, double)> after_iteration;
@@ -345,6 +378,10 @@ void validate(const FitOptions& options) {
         throw UsageError("fit: the start cd must be a number >= 0, not " + std::to_string(options.start_cd));
     if (!(std::isfinite(options.start_cs) && options.start_cs >= 0))
         throw UsageError("fit: the start cs must be a number >= 0, not " + std::to_string(options.start_cs));
+    if (!(std::isfinite(options.loss_scale) && options.loss_scale >= 0))
+        throw UsageError("fit: the loss scale must be a number >= 0 (0: automatic), not " + std::to_string(options.loss_scale));
+    if (options.solver == Solver::Thesis && (options.residual != Residual::Linear || options.loss != Loss::Squared))
+        throw UsageError("fit: the thesis solver fits the linear residual by least squares only (use the global solver)");
 }
 
 Observations observations(const BrdfGrid& grid, double limit_deg) {
@@ -408,6 +445,98 @@ FitResult fit_ashikhmin_shirley(const BrdfGrid& measured, const FitOptions& opti
     return fit_ashikhmin_shirley(observations(measured, options.limit_deg), options);
 }
 
+namespace {
+
+double model_value(const Observation& s, const FitResult& fit, size_t c) {
+    return fit.cd[c] / kPi + fit.cs[c] * ashikhmin_lobe(s.l, s.v, fit.ns);
+}
+
+// The robust weight ω(r) of a residual r at scale δ: ψ(r)/r of the loss.
+double robust_weight(Loss loss, double r, double scale) {
+    const double t = std::abs(r) / scale;
+    if (loss == Loss::Huber) return t <= 1 ? 1.0 : 1.0 / t;
+    if (loss == Loss::Cauchy) return 1.0 / (1.0 + t * t);
+    return 1.0;
+}
+
+const char* residual_name(Residual r) { return r == Residual::CubeRoot ? "cube root" : r == Residual::Log ? "log" : "linear"; }
+const char* loss_name(Loss l) { return l == Loss::Huber ? "Huber" : l == Loss::Cauchy ? "Cauchy" : "squared"; }
+
+// A compressed residual and/or a robust loss. The exponent is searched globally on the linear
+// residual; from that optimum a bounded Levenberg-Marquardt minimises Σ (w_j (g(y) − g(f)))² itself
+// (a local step: the compressed problem has no linear structure to search globally). A robust loss is
+// iteratively reweighted least squares: each round sets ω_j from the current residuals and solves
+// again with weights w_j ω_j^½, until no parameter moves by more than 1e-5 of itself.
+void run_reweighted(const std::vector<Observation>& samples, const FitOptions& options, FitResult& result) {
+    double mean = 0;
+    for (const Observation& s : samples) mean += (s.value[0] + s.value[1] + s.value[2]) / 3.0;
+    mean /= static_cast<double>(samples.size());
+    const Transform transform{options.residual, 1e-3 * std::max(mean, 1e-12)};
+    const std::vector<std::string> warnings = result.warnings;
+    run_global(samples, options, result);  // the linear least-squares optimum: the start
+    std::vector<std::string> round_warnings = result.warnings;
+    std::vector<Observation> robust = samples;
+    double scale = options.loss_scale;
+    bool settled = false;
+    const int rounds = options.loss == Loss::Squared ? 1 : 300;  // the reweighting converges linearly: Cauchy on poorly fitting data needs ~200
+    for (int round = 1; round <= rounds && !settled; ++round) {
+        if (options.loss != Loss::Squared) {
+            std::vector<double> residuals(samples.size());
+            for (size_t j = 0; j < samples.size(); ++j) {
+                double sum = 0;
+                for (size_t c = 0; c < 3; ++c) {
+                    const double r = transform.value(samples[j].value[c]) - transform.value(model_value(samples[j], result, c));
+                    sum += r * r;
+                }
+                residuals[j] = samples[j].weight * std::sqrt(sum / 3.0);
+            }
+            if (!(scale > 0)) {  // Huber's 1.345 σ, σ from the median absolute residual of the start
+                std::vector<double> sorted = residuals;
+                std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
+                scale = 1.345 * 1.4826 * std::max(sorted[sorted.size() / 2], 1e-300);
+            }
+            for (size_t j = 0; j < samples.size(); ++j)
+                robust[j].weight = samples[j].weight * std::sqrt(robust_weight(options.loss, residuals[j], scale));
+        }
+        FitResult next;
+        const FitResult current = result;
+        run_global(robust, FitOptions{}, next, transform, &current);
+        bool still = std::abs(next.ns - result.ns) <= 1e-5 * result.ns;
+        for (size_t c = 0; c < 3; ++c)
+            still = still && std::abs(next.cd[c] - result.cd[c]) <= 1e-8 + 1e-5 * result.cd[c] &&
+                    std::abs(next.cs[c] - result.cs[c]) <= 1e-8 + 1e-5 * result.cs[c];
+        settled = options.loss == Loss::Squared || still;  // least squares: one solve, nothing to reweight
+        result.ns = next.ns;
+        result.cd = next.cd;
+        result.cs = next.cs;
+        result.stop_reason = next.stop_reason;
+        result.converged = next.converged;
+        round_warnings = next.warnings;
+        result.reweightings = options.loss == Loss::Squared ? 0 : round;
+        if (options.on_progress) options.on_progress({std::min(0.6 + 0.004 * round, 0.99), "reweighting", result.ns, result.cd, result.cs, 0.0});
+    }
+    result.warnings = warnings;
+    result.warnings.insert(result.warnings.end(), round_warnings.begin(), round_warnings.end());
+    if (!settled) {
+        result.converged = false;
+        result.warnings.push_back("the reweighting did not settle in 300 rounds");
+    }
+    result.stop_reason = (options.loss == Loss::Squared ? std::string() : std::to_string(result.reweightings) + " reweighting rounds, ") +
+                         residual_name(options.residual) + " residual, " + loss_name(options.loss) + " loss; " + result.stop_reason;
+    result.residual = residual_name(options.residual);
+    result.loss = loss_name(options.loss);
+    result.loss_scale_used = options.loss == Loss::Squared ? 0.0 : scale;
+    // The cost of the problem solved: transformed residuals with the final robust weights.
+    result.cost = 0;
+    for (size_t j = 0; j < samples.size(); ++j)
+        for (size_t c = 0; c < 3; ++c) {
+            const double r = robust[j].weight * (transform.value(samples[j].value[c]) - transform.value(model_value(samples[j], result, c)));
+            result.cost += r * r;
+        }
+}
+
+}  // namespace
+
 FitResult fit_ashikhmin_shirley(const Observations& data, const FitOptions& options) {
     validate(options);
     const std::vector<Observation>& samples = data.samples;
@@ -419,7 +548,12 @@ FitResult fit_ashikhmin_shirley(const Observations& data, const FitOptions& opti
     if (data.masked > 0)
         result.warnings.push_back(std::to_string(data.masked) + " of " + std::to_string(data.total) +
                                   " samples are unmeasured (negative) and left out");
-    if (options.solver == Solver::Global) {
+    const bool reweighted = options.solver == Solver::Global && (options.residual != Residual::Linear || options.loss != Loss::Squared);
+    if (reweighted) {
+        run_reweighted(samples, options, result);
+        result.mono_cd = (result.cd[0] + result.cd[1] + result.cd[2]) / 3.0;
+        result.mono_cs = (result.cs[0] + result.cs[1] + result.cs[2]) / 3.0;
+    } else if (options.solver == Solver::Global) {
         run_global(samples, options, result);
         result.mono_cd = (result.cd[0] + result.cd[1] + result.cd[2]) / 3.0;
         result.mono_cs = (result.cs[0] + result.cs[1] + result.cs[2]) / 3.0;
@@ -431,7 +565,7 @@ FitResult fit_ashikhmin_shirley(const Observations& data, const FitOptions& opti
     for (int c = 0; c < 3; ++c)
         rgb_sum += error_number(samples, c, result.ns, result.cd[static_cast<size_t>(c)], result.cs[static_cast<size_t>(c)]);
     result.error_rgb = std::sqrt(rgb_sum);
-    result.cost = weighted_cost(samples, result.ns, result.cd, result.cs);
+    if (!reweighted) result.cost = weighted_cost(samples, result.ns, result.cd, result.cs);
     if (options.solver == Solver::Global) {
         result.optimum_cost = result.cost;
     } else {

@@ -25,6 +25,14 @@ namespace fxview::fit {
 //   global optimum, so that a stall is never silent.
 enum class Solver { Global, Thesis };
 
+// The residual's scale (Ngan et al. 2005 compare them): linear (the thesis' eq. 4.25), or compressed
+// so that the highlight's peak does not outweigh the rest: cube root or log of (value + ε), ε = 1e-3 ×
+// the data's mean value (so that values near 0 keep a finite slope).
+enum class Residual { Linear, CubeRoot, Log };
+// The loss on each sample's residual: least squares, or robust against outliers (Huber: linear beyond
+// the scale; Cauchy: logarithmic). Solved by iteratively reweighted least squares.
+enum class Loss { Squared, Huber, Cauchy };
+
 // Where a running fit is, for a progress display (a plugin's worker thread, docs/plugins.md).
 struct FitProgress {
     double fraction = 0;  // 0..1 of the expected work
@@ -39,6 +47,9 @@ struct FitOptions {
     int iterations = 500;     // the thesis solver's stage-1 iterations
     double start_ns = 25.0, start_cd = 0.2, start_cs = 0.2;  // the thesis solver's start
     Solver solver = Solver::Global;
+    Residual residual = Residual::Linear;  // the global solver only
+    Loss loss = Loss::Squared;             // the global solver only
+    double loss_scale = 0;  // robust losses: the residual where they turn; 0: 1.345 × the residuals' robust σ (MAD), Huber's choice
     // Called between steps; it may throw (e.g. plugin::Cancelled) to stop the fit.
     std::function<void(const FitProgress&)> on_progress;
 };
@@ -60,12 +71,17 @@ struct FitResult {
     size_t samples_masked = 0;  // unmeasured samples left out
     LevenbergMarquardtReport stage1;  // the thesis solver's stage 1
 
-    // The problem both solvers solve: the weighted RGB cost Σ_c Σ_j (w_j (y_jc − f_jc))² (eq. 4.27).
+    // The problem both solvers solve: the weighted RGB cost Σ_c Σ_j (w_j (y_jc − f_jc))² (eq. 4.27);
+    // with a compressed residual or a robust loss, Σ (w_j ω_j^½ (g(y) − g(f)))² with the final robust
+    // weights ω_j.
     double cost = 0;
     double optimum_cost = 0;  // the global search's cost (for the thesis solver: what it could have reached)
     std::string solver;       // "global" or "thesis"
     std::string stop_reason;  // why the last stage stopped
     bool converged = true;
+    std::string residual = "linear", loss = "squared";
+    double loss_scale_used = 0;  // robust losses: the scale applied
+    int reweightings = 0;        // iteratively reweighted least squares: the outer iterations
     std::vector<std::string> warnings;  // parameters at a bound, a stall, a model outside its assumptions
 };
 

@@ -69,9 +69,21 @@ public:
                 fail("Limit must be an angle in degrees from 5 to 90");
             options_.limit_deg = limit->value.numbers[0];
         }
+        const std::string residual = d.text("Residual"), loss = d.text("Loss");
+        if (residual == "cbrt") options_.residual = fit::Residual::CubeRoot;
+        else if (residual == "log") options_.residual = fit::Residual::Log;
+        else if (!residual.empty() && residual != "linear") fail("Residual must be \"linear\", \"cbrt\" or \"log\"");
+        if (loss == "huber") options_.loss = fit::Loss::Huber;
+        else if (loss == "cauchy") options_.loss = fit::Loss::Cauchy;
+        else if (!loss.empty() && loss != "squared") fail("Loss must be \"squared\", \"huber\" or \"cauchy\"");
         const std::string solver = d.text("Solver");
         if (solver == "thesis") options_.solver = fit::Solver::Thesis;
         else if (!solver.empty() && solver != "global") fail("Solver must be \"global\" or \"thesis\"");
+        try {
+            fit::validate(options_);
+        } catch (const UsageError& e) {
+            fail(e.what());
+        }
     }
 
     std::string name() const override { return name_; }
