@@ -21,3 +21,10 @@ fxview=build/bin/fxview
 for effect in spectral/wavelength spectral/thinfilm spectral/cd brdf/analytic brdf/measured; do
   "$fxview" bench "effects/$effect.fx" --frames 10 | tee "$out/bench-$(basename "$effect").md"
 done
+# The sweeps of every effect (issue #10) and the film-fit round trip on the NVIDIA driver's GLSL.
+for effect in debug examples/textured brdf/analytic brdf/measured spectral/wavelength spectral/cd spectral/thinfilm; do
+  "$fxview" compare "effects/$effect.fx" --sweep --sweep-random 1 --size 24x24 | tail -3 | tee "$out/sweep-$(basename "$effect").txt" || true
+done
+rgb=$("$fxview" pick effects/spectral/thinfilm.fx -t FresnelExact --set Thickness=450 --set Variation=0 --mesh sphere --size 64x64 --at 32,32 --json |
+      python3 -c "import json,sys; print(','.join('%.9g' % v for v in json.load(sys.stdin)['rgba'][:3]))")
+"$fxview" plugin run effects/spectral/thinfilm.fx ThicknessFromColour --set TargetColour="$rgb" | tee "$out/film-fit-450nm.txt" || true
