@@ -100,6 +100,22 @@ TEST_CASE("every shipped effect runs a few frames in the viewer without crashing
     CHECK(effects >= 3);
 }
 
+TEST_CASE("view takes render's options: --size, --samples and --debug-view give render's image") {
+    const std::string shot = temp_path("view-options.png"), rendered = temp_path("render-options.png");
+    const std::string options = " --debug-view uv --size 64x48 --samples 4";
+    REQUIRE(run("view" + options + " --frames 2 --render-screenshot " + shot).exit_code == 0);
+    REQUIRE(run("render" + options + " --out " + rendered).exit_code == 0);
+    const auto view = load_png(shot), render = load_png(rendered);
+    REQUIRE(view.width() == 64);
+    REQUIRE(view.height() == 48);
+    // The same scene, debug shader and MSAA: the same 8-bit pixels up to one code value (the
+    // window's multisample resolve and the offscreen one may round differently at edges).
+    for (const auto& [x, y] : {std::pair{32, 24}, std::pair{20, 20}, std::pair{44, 30}})
+        for (int c = 0; c < 4; ++c) CHECK(std::abs(texel(view, x, y)[c] - texel(render, x, y)[c]) <= 1.0f / 255.0f + 1e-6f);
+    CHECK(run("view --backend osmesa --frames 1").exit_code == 2);  // a window has no backend choice
+    CHECK(run("view --samples 3 --frames 1").exit_code == 2);
+}
+
 TEST_CASE("broken scripts and options are refused with exit 2") {
     const std::string script = temp_path("bad-script.txt");
     std::ofstream(script) << "set PlainColor 1,0,0\nfly away\n";

@@ -23,7 +23,11 @@ app::CommandRunner add_view_command(CLI::App& app) {
     command->add_option("--screenshot", o->screenshot, "With --frames: save the whole window (UI included) at exit");
     command->add_option("--render-screenshot", o->render_screenshot, "With --frames: save the render view at exit");
     command->add_option("--script", o->script, "Play UI actions from a file (docs/viewer.md)");
-    return [o] {
+    return [o, command] {
+        // Every render option the viewer shares with `render` takes effect (issue #13); --backend
+        // cannot: the viewer is a window.
+        const auto given = [command](const char* name) { return command->get_option(name)->count() > 0; };
+        if (given("--backend")) throw UsageError("view: --backend does not apply: the viewer always opens a GLFW window");
         o->scene.backend = "glfw";
         const app::RenderRequest request = app::to_render_request(o->scene);
         ViewerOptions options;
@@ -41,6 +45,14 @@ app::CommandRunner add_view_command(CLI::App& app) {
             options.render_width = render.x;
             options.render_height = render.y;
         }
+        if (given("--size") && o->render_size.empty()) {  // --size is the render view's size, as in render
+            options.render_width = request.width;
+            options.render_height = request.height;
+        }
+        if (request.samples != 0 && request.samples != 2 && request.samples != 4 && request.samples != 8)
+            throw UsageError("view: --samples must be 0, 2, 4 or 8 (the viewer's MSAA choices)");
+        options.samples = request.samples;
+        if (given("--debug-view")) options.debug_view = o->scene.debug_view;
         options.frames = o->frames;
         options.screenshot = o->screenshot;
         options.render_screenshot = o->render_screenshot;

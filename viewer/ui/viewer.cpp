@@ -117,6 +117,9 @@ public:
         if (!options.effect_path.empty()) load_effect(options.effect_path, options.technique, options.sets, options.preset);
         if (!session_)
             for (auto& o : objects_) o.view = ViewMode::Normals;
+        if (!options.debug_view.empty())
+            for (auto& o : objects_) o.view = parse_view(options.debug_view);
+        samples_ = options.samples;
         for (int i = 0; i < 2; ++i) timer_queries_[i] = gl::create_query(GL_TIME_ELAPSED);
         script_ = options.script;
     }

@@ -30,6 +30,8 @@ struct ViewerOptions {
     std::string render_screenshot;            // render view at exit
     std::vector<ScriptAction> script;
     bool gl_debug = false;
+    int samples = 0;         // MSAA of the render view: 0, 2, 4 or 8
+    std::string debug_view;  // normals, uv, camera or light: every object starts in that debug view
 };
 
 // Runs until the window closes (or the frame count is reached); returns the exit code.
