@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <thread>
 #include <set>
 #include <sstream>
 
@@ -98,6 +99,25 @@ TEST_CASE("every shipped effect runs a few frames in the viewer without crashing
         CHECK(r.exit_code == 0);
     }
     CHECK(effects >= 3);
+}
+
+TEST_CASE("an effect that fails at start is watched: fixing the file opens it") {
+    const std::string effect = temp_path("viewer-watch/broken.fx"), script = temp_path("viewer-watch.txt");
+    std::filesystem::create_directories(std::filesystem::path(effect).parent_path());
+    const std::string good = "GLSLShader VS { in vec3 position; void main() { gl_Position = vec4(position, 1.0); } }\n"
+                             "GLSLShader FS { out vec4 color; void main() { color = vec4(1.0); } }\n"
+                             "technique T { pass P { VertexShader = VS; FragmentShader = FS; } }\n";
+    std::ofstream(effect) << "technique T { pass P { VertexShader = VS; FragmentShader = Missing; } }\n";
+    std::ofstream(script) << "wait-effect 60\ntechnique T\n";
+    // The fix is saved while the viewer runs (after it has failed once).
+    std::thread fixer([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+        std::ofstream(effect) << good;
+    });
+    const Result r = run("view " + effect + " --render-size 32x32 --script " + script + " --frames 2");
+    fixer.join();
+    CAPTURE(r.err);
+    CHECK(r.exit_code == 0);  // wait-effect found the effect loaded, and `technique T` found T
 }
 
 TEST_CASE("view takes render's options: --size, --samples and --debug-view give render's image") {

@@ -132,11 +132,14 @@ public:
             const auto now = std::chrono::steady_clock::now();
             frame_seconds_ = std::chrono::duration<double>(now - last_frame).count();
             last_frame = now;
-            if (session_ && now - last_poll > std::chrono::milliseconds(500)) {  // hot reload
+            if (now - last_poll > std::chrono::milliseconds(500)) {  // hot reload
                 last_poll = now;
-                if (session_->files_changed()) {
+                if (session_ && session_->files_changed()) {
                     const auto error = session_->reload();
                     reload_error_ = error ? *error : std::string();
+                } else if (!session_ && failed_file_changed()) {
+                    // An effect that failed at start is watched too: saving the fix opens it.
+                    load_effect(requested_effect_path_, options_.technique, options_.sets, options_.preset);
                 }
             }
             plugin_panel_.update(session_.get());  // a running plugin's live parameters; its result when done
@@ -149,9 +152,21 @@ public:
     }
 
 private:
+    // Whether the effect that failed to load (no session yet) was written since the last attempt.
+    bool failed_file_changed() {
+        if (requested_effect_path_.empty()) return false;
+        std::error_code error;
+        const auto written = std::filesystem::last_write_time(requested_effect_path_, error);
+        if (error || written == failed_write_time_) return false;
+        failed_write_time_ = written;
+        return true;
+    }
+
     void load_effect(const std::string& path, const std::string& technique, const std::vector<std::string>& sets,
                      const std::string& preset) {
         requested_effect_path_ = path;
+        std::error_code time_error;
+        failed_write_time_ = std::filesystem::last_write_time(path, time_error);  // the version this attempt reads
         try {
             app::EffectOptions effect_options;
             effect_options.access = access_;
@@ -529,6 +544,12 @@ private:
             ImGui::EndPopup();
         }
         if (!session_) {
+            if (!requested_effect_path_.empty()) {
+                // The file is watched; Reload also retries after fixing an include or a texture.
+                if (ImGui::Button("Reload")) load_effect(requested_effect_path_, options_.technique, options_.sets, options_.preset);
+                ImGui::SameLine();
+                ImGui::TextDisabled("%s failed to load (watched: saving it retries)", requested_effect_path_.c_str());
+            }
             draw_file_access();
             return;
         }
@@ -831,6 +852,20 @@ private:
             if (!tabs.count(args[0])) throw UsageError("no tab '" + args[0] + "' (Effect, Scene, Textures, Pick, View, Plugins)");
             requested_tab_ = args[0];
             wait_frames_ = 1;
+        } else if (a.verb == "wait-effect") {
+            // Waits, frame by frame, until an effect is loaded (e.g. a failed one was fixed on disk).
+            const double limit = std::stod(args[0]);
+            if (!session_) {
+                if (wait_started_ == std::chrono::steady_clock::time_point{}) wait_started_ = std::chrono::steady_clock::now();
+                if (std::chrono::duration<double>(std::chrono::steady_clock::now() - wait_started_).count() < limit) {
+                    --script_position_;
+                    wait_frames_ = 1;
+                    return;
+                }
+                wait_started_ = {};
+                throw Error("no effect loaded after " + args[0] + " s");
+            }
+            wait_started_ = {};
         } else if (a.verb == "plugin-start") {
             // Starts a plugin and goes on: the window keeps drawing while it runs (plugin-wait).
             if (!plugin_panel_.start(session_.get(), args[0])) throw UsageError(plugin_panel_.error());
@@ -896,13 +931,14 @@ private:
     Pick pick_;
     PluginPanel plugin_panel_;
     int plugin_start_frame_ = 0;  // plugin-start: frames drawn while the plugin runs
-    std::chrono::steady_clock::time_point plugin_start_time_;
+    std::chrono::steady_clock::time_point plugin_start_time_, wait_started_;
     std::string requested_tab_;
     std::vector<std::string> browser_files_, pending_window_shots_;
     char path_input_[512] = "effects/debug.fx", preset_input_[512] = "preset.json", obj_input_[512] = "model.obj",
          texture_input_[512] = "textures/checker.png", shot_input_[512] = "out/screenshot.png", allow_input_[512] = "";
     app::AccessOptions access_ = options_.access;
     std::string requested_effect_path_;  // the last effect asked for, even if it failed to load
+    std::filesystem::file_time_type failed_write_time_{};  // its modification time at the last attempt
     std::vector<ScriptAction> script_;
     size_t script_position_ = 0;
     int wait_frames_ = 0;
