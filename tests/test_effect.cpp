@@ -367,3 +367,15 @@ TEST_CASE("a sampler3D reads the slices of a stacked image") {
     CHECK(image.pixel(0, 0)[0] == 3.0f);  // slice 1, top row
     CHECK(image.pixel(0, 1)[0] == 4.0f);  // slice 1, bottom row
 }
+
+TEST_CASE("an effect opens on its technique annotated Default, else on its first") {
+    CHECK(effect::load_effect(kEffects + "/debug.fx", load_options()).default_technique().name ==
+          effect::load_effect(kEffects + "/debug.fx", load_options()).techniques.front().name);
+    // The shipped effects open on their most representative technique, not on the thesis' simplest.
+    const std::pair<const char*, const char*> shipped[] = {{"/spectral/wavelength.fx", "Phong"}, {"/spectral/thinfilm.fx", "FresnelExact"},
+                                                           {"/spectral/cd.fx", "Grating"}, {"/brdf/analytic.fx", "PBR"}};
+    for (const auto& [file, technique] : shipped) {
+        CAPTURE(file);
+        CHECK(effect::load_effect(kEffects + file, load_options()).default_technique().name == technique);
+    }
+}

@@ -108,7 +108,7 @@ GLSLShader AshikhminShirleyFitFS {
 }
 
 technique Lambert { pass p0 { VertexShader = StandardVS; FragmentShader = LambertFS; } }
-technique PBR { pass p0 { VertexShader = StandardVS; FragmentShader = PBRFS; } }
+technique PBR < bool Default = true; > { pass p0 { VertexShader = StandardVS; FragmentShader = PBRFS; } }
 technique ModifiedPhong { pass p0 { VertexShader = StandardVS; FragmentShader = ModifiedPhongFS; } }
 technique CookTorranceBeckmann { pass p0 { VertexShader = StandardVS; FragmentShader = CookTorranceBeckmannFS; } }
 technique AshikhminShirley { pass p0 { VertexShader = StandardVS; FragmentShader = AshikhminShirleyFS; } }

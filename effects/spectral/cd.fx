@@ -173,4 +173,4 @@ GLSLShader GratingFS {
 }
 
 technique Thesis { pass p0 { VertexShader = StandardVS; FragmentShader = ThesisFS; } }
-technique Grating { pass p0 { VertexShader = StandardVS; FragmentShader = GratingFS; } }
+technique Grating < bool Default = true; > { pass p0 { VertexShader = StandardVS; FragmentShader = GratingFS; } }

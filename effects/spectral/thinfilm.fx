@@ -404,7 +404,7 @@ technique PathDifference { pass p0 { VertexShader = StandardVS; FragmentShader =
 technique Fresnel { pass p0 { VertexShader = StandardVS; FragmentShader = FresnelFS; } }
 technique FresnelFaster { pass p0 { VertexShader = StandardVS; FragmentShader = FresnelFasterFS; } }
 technique FresnelAlternative { pass p0 { VertexShader = StandardVS; FragmentShader = FresnelAlternativeFS; } }
-technique FresnelExact { pass p0 { VertexShader = StandardVS; FragmentShader = FresnelExactFS; } }
+technique FresnelExact < bool Default = true; > { pass p0 { VertexShader = StandardVS; FragmentShader = FresnelExactFS; } }
 technique BumpFresnelExact { pass p0 { VertexShader = StandardVS; FragmentShader = BumpFresnelExactFS; } }
 technique Bubble { pass p0 { VertexShader = StandardVS; FragmentShader = BubbleFS; } }
 technique FabryPerot { pass p0 { VertexShader = StandardVS; FragmentShader = FabryPerotFS; } }

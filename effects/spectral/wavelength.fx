@@ -203,7 +203,7 @@ GLSLShader LodPhongFS {
 technique Constant { pass p0 { VertexShader = StandardVS; FragmentShader = ConstantFS; } }
 technique ConstantUnoptimised { pass p0 { VertexShader = StandardVS; FragmentShader = ConstantUnoptimisedFS; } }
 technique Lambert { pass p0 { VertexShader = StandardVS; FragmentShader = LambertFS; } }
-technique Phong { pass p0 { VertexShader = StandardVS; FragmentShader = PhongFS; } }
+technique Phong < bool Default = true; > { pass p0 { VertexShader = StandardVS; FragmentShader = PhongFS; } }
 technique Blinn { pass p0 { VertexShader = StandardVS; FragmentShader = BlinnFS; } }
 technique Single { pass p0 { VertexShader = StandardVS; FragmentShader = LambertFS; } }
 technique Combined { pass p0 { VertexShader = StandardVS; FragmentShader = CombinedFS; } }

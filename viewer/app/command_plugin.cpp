@@ -31,7 +31,7 @@ Loaded load(const EffectOptions& options) {
     }
     for (const auto& assignment : options.sets) effect::set_value_from_text(loaded.effect, loaded.values, assignment);
     effect::check_constraints(loaded.effect, loaded.values);
-    if (loaded.technique.empty()) loaded.technique = loaded.effect.techniques.front().name;
+    if (loaded.technique.empty()) loaded.technique = loaded.effect.default_technique().name;
     return loaded;
 }
 

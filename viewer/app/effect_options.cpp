@@ -11,7 +11,7 @@ namespace fxview::app {
 
 void add_effect_options(CLI::App& command, EffectOptions& options) {
     command.add_option("effect", options.path, "Effect file (.fx); without one the built-in debug shader draws");
-    command.add_option("--technique,-t", options.technique, "Technique to render (default: the first)");
+    command.add_option("--technique,-t", options.technique, "Technique to render (default: the effect's Default technique, else the first)");
     command.add_option("--set", options.sets, "Parameter value NAME=VALUE (0.5 | 1,0,0 | #rrggbb | true | FILE for a sampler)")
         ->allow_extra_args(false);
     command.add_option("--preset", options.preset, "Load parameter values from a JSON preset (before --set)");

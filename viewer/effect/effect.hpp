@@ -130,6 +130,8 @@ struct Effect {
     const Parameter* find_parameter(const std::string& name) const;
     const ShaderBlock* find_shader(const std::string& name) const;
     const Technique* find_technique(const std::string& name) const;
+    // The technique an effect opens on: the one annotated `bool Default = true`, else the first.
+    const Technique& default_technique() const;
     const TextureResource* find_texture(const std::string& name) const;
     const PluginDeclaration* find_plugin(const std::string& name) const;
 };

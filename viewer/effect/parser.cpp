@@ -59,6 +59,12 @@ std::string PluginDeclaration::text(const std::string& annotation) const {
     if (!a->value.is_string) throw EffectError(a->where, "plugin " + name + ": " + annotation + " must be a string");
     return a->value.text;
 }
+const Technique& Effect::default_technique() const {
+    for (const auto& t : techniques)
+        for (const auto& a : t.annotations)
+            if (a.name == "Default" && !a.value.is_string && !a.value.numbers.empty() && a.value.numbers[0] != 0) return t;
+    return techniques.front();
+}
 const Technique* Effect::find_technique(const std::string& name) const {
     for (const auto& t : techniques)
         if (t.name == name) return &t;

@@ -12,7 +12,7 @@ EffectSession::EffectSession(std::string path, effect::LoadOptions options, std:
     auto parsed = std::make_unique<effect::Effect>(effect::load_effect(path_, options_));
     values_ = effect::default_values(*parsed);
     loaded_ = prepare(std::move(parsed), values_);
-    technique_ = loaded_->effect->techniques.front().name;
+    technique_ = loaded_->effect->default_technique().name;
     watch();
 }
 
@@ -51,7 +51,7 @@ std::optional<std::string> EffectSession::reload() {
     loaded_ = std::move(fresh);
     values_ = std::move(carried);
     renderer_.reset();
-    if (!loaded_->techniques.count(technique_)) technique_ = loaded_->effect->techniques.front().name;
+    if (!loaded_->techniques.count(technique_)) technique_ = loaded_->effect->default_technique().name;
     watch();
     return std::nullopt;
 }
