@@ -132,6 +132,15 @@ TEST_CASE("view takes render's options: --size, --samples and --debug-view give 
     // window's multisample resolve and the offscreen one may round differently at edges).
     for (const auto& [x, y] : {std::pair{32, 24}, std::pair{20, 20}, std::pair{44, 30}})
         for (int c = 0; c < 4; ++c) CHECK(std::abs(texel(view, x, y)[c] - texel(render, x, y)[c]) <= 1.0f / 255.0f + 1e-6f);
+    // Save screenshot gives what the view shows: uncovered pixels on the view's opaque grey backdrop
+    // (linear 0.02, sRGB 39/255), not transparent.
+    const std::string saved = temp_path("view-saved.png"), script = temp_path("view-saved.txt");
+    std::ofstream(script) << "save-screenshot " << saved << "\n";
+    REQUIRE(run("view" + options + " --script " + script + " --frames 2").exit_code == 0);
+    const auto backdrop = load_png(saved);
+    CHECK(texel(backdrop, 0, 0)[3] == 1.0f);
+    CHECK(std::abs(texel(backdrop, 0, 0)[0] - 39.0f / 255.0f) <= 1.0f / 255.0f);
+    CHECK(texel(backdrop, 32, 24) == texel(view, 32, 24));  // the object itself is as rendered
     CHECK(run("view --backend osmesa --frames 1").exit_code == 2);  // a window has no backend choice
     CHECK(run("view --samples 3 --frames 1").exit_code == 2);
 }

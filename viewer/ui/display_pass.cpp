@@ -19,6 +19,7 @@ constexpr const char* kFragment = R"(#version 450 core
 in vec2 uv;
 uniform sampler2D u_source;
 uniform bool u_srgb;
+uniform float u_backdrop;
 layout(location = 0) out vec4 color;
 vec3 encode(vec3 c) {
     c = clamp(c, 0.0, 1.0);
@@ -27,7 +28,7 @@ vec3 encode(vec3 c) {
 void main() {
     vec4 linear = texelFetch(u_source, ivec2(gl_FragCoord.xy), 0);
     // Blend over a dark grey so that uncovered (alpha 0) pixels read as background.
-    vec3 shown = mix(vec3(0.02), linear.rgb, clamp(linear.a, 0.0, 1.0));
+    vec3 shown = mix(vec3(u_backdrop), linear.rgb, clamp(linear.a, 0.0, 1.0));
     color = vec4(u_srgb ? encode(shown) : clamp(shown, 0.0, 1.0), 1.0);
 })";
 
@@ -57,6 +58,7 @@ void DisplayPass::run(GLuint source, int width, int height, bool srgb) {
     glBindTextureUnit(0, source);
     glProgramUniform1i(program_.get(), glGetUniformLocation(program_.get(), "u_source"), 0);
     glProgramUniform1i(program_.get(), glGetUniformLocation(program_.get(), "u_srgb"), srgb ? 1 : 0);
+    glProgramUniform1f(program_.get(), glGetUniformLocation(program_.get(), "u_backdrop"), kDisplayBackdrop);
     glBindVertexArray(vertex_array_.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

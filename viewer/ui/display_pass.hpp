@@ -6,6 +6,9 @@
 
 namespace fxview::ui {
 
+// The linear grey that uncovered (alpha 0) pixels show in the view, and screenshots get too.
+inline constexpr float kDisplayBackdrop = 0.02f;
+
 class DisplayPass {
 public:
     DisplayPass();

@@ -314,13 +314,30 @@ private:
         image::write_image(path, target_->read_color(0), srgb_display_ ? image::Encoding::Srgb : image::Encoding::Linear);
     }
 
+    // What the view shows, at any size: uncovered pixels over the view's backdrop (opaque), unless the
+    // user asked for a transparent background.
     void screenshot_at(const std::string& path, int width, int height) {
         gl::RenderTarget shot({width, height, 1, samples_});
         render_scene(shot);
         const auto parent = fs::path(path).parent_path();
         if (!parent.empty()) fs::create_directories(parent);
-        image::write_image(path, shot.read_color(0), srgb_display_ ? image::Encoding::Srgb : image::Encoding::Linear);
+        image::FloatImage image = shot.read_color(0);
+        if (!transparent_shots_)
+            for (size_t i = 0; i + 3 < image.data.size(); i += 4) {
+                const float alpha = std::clamp(image.data[i + 3], 0.0f, 1.0f);
+                for (size_t c = 0; c < 3; ++c) image.data[i + c] = kDisplayBackdrop + (image.data[i + c] - kDisplayBackdrop) * alpha;
+                image.data[i + 3] = 1.0f;
+            }
+        image::write_image(path, image, srgb_display_ ? image::Encoding::Srgb : image::Encoding::Linear);
         status_ = "saved " + path;
+    }
+
+    void save_screenshot() {
+        try {
+            screenshot_at(shot_input_, shot_size_.x, shot_size_.y);
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
     }
 
     void pick_at(int x, int y) {
@@ -427,6 +444,7 @@ private:
         if (pressed(GLFW_KEY_G)) srgb_display_ = !srgb_display_;
         if (pressed(GLFW_KEY_H) || pressed(GLFW_KEY_F1)) show_help_ = !show_help_;
         if (pressed(GLFW_KEY_F11)) toggle_fullscreen();
+        if (pressed(GLFW_KEY_F12)) save_screenshot();
     }
 
     void toggle_fullscreen() {
@@ -754,13 +772,8 @@ private:
         ImGui::InputInt2("screenshot size", &shot_size_.x);
         shot_size_ = glm::clamp(shot_size_, glm::ivec2(1), glm::ivec2(16384));
         ImGui::InputText("file (.png/.exr)", shot_input_, sizeof shot_input_);
-        if (ImGui::Button("Save screenshot")) {
-            try {
-                screenshot_at(shot_input_, shot_size_.x, shot_size_.y);
-            } catch (const std::exception& e) {
-                status_ = e.what();
-            }
-        }
+        ImGui::Checkbox("transparent background", &transparent_shots_);
+        if (ImGui::Button("Save screenshot (F12)")) save_screenshot();
     }
 
     void draw_help() {
@@ -777,6 +790,7 @@ private:
             "  R              reset the selection     Shift+R  reset all\n"
             "  Space          pause rendering         V        vsync\n"
             "  G              sRGB / legacy display   F11      fullscreen\n"
+            "  F12            save screenshot\n"
             "  H or F1        this help");
         ImGui::End();
     }
@@ -841,6 +855,8 @@ private:
         } else if (a.verb == "screenshot") {
             pending_window_shots_.push_back(args[0]);
             wait_frames_ = 1;
+        } else if (a.verb == "save-screenshot") {  // as the Save screenshot button, at the render view's size
+            screenshot_at(args[0], target_->width(), target_->height());
         } else if (a.verb == "render-screenshot") {
             render_scene(*target_);
             write_render(args[0]);
@@ -925,7 +941,7 @@ private:
     bool dragging_ = false, drag_moved_ = false;
     glm::vec2 drag_last_{0.0f};
     glm::ivec2 view_size_{640, 480}, windowed_pos_{0}, windowed_size_{1280, 800}, shot_size_{1920, 1080};
-    bool paused_ = false, vsync_ = true, srgb_display_ = true, show_help_ = false;
+    bool paused_ = false, vsync_ = true, srgb_display_ = true, show_help_ = false, transparent_shots_ = false;
     int samples_ = 0, sampler_choice_ = 0, frame_number_ = 0, exit_code_ = 0;
     double frame_seconds_ = 0, gpu_ms_ = 0;
     Pick pick_;
