@@ -412,6 +412,50 @@ TEST_CASE("brdf-grid and fit: synthetic data of the fit model come back as its p
               .exit_code == 0);
 }
 
+TEST_CASE("fit --model all ranks every model; the best one's preset renders with its technique") {
+    const std::string data = temp_path("fit/ggx.csv"), preset = temp_path("fit/ggx-preset.json"), ranking = temp_path("fit/ranking.csv");
+    REQUIRE(run("brdf-grid --model ggx --param kd=0.05,0.1,0.2 --param f0=0.9,0.6,0.3 --param alpha=0.15 --samples 10 19 19 --out " + data)
+                .exit_code == 0);
+    const Result r = run("fit " + data + " --model all --json --preset " + preset + " --out " + ranking);
+    REQUIRE(r.exit_code == 0);
+    const auto json = nlohmann::json::parse(r.out);
+    REQUIRE(json["ranking"].size() == 7);  // a grid can show anisotropy: all seven models
+    CHECK(json["model"] == "ggx");
+    CHECK(json["ranking"][0]["model"] == "ggx");
+    CHECK(json["parameters"]["alpha"].get<double>() == doctest::Approx(0.15).epsilon(1e-6));  // exact data: exact fit
+    CHECK(json["parameters"]["F0"][0].get<double>() == doctest::Approx(0.9).epsilon(1e-6));
+    for (size_t i = 1; i < json["ranking"].size(); ++i)
+        CHECK(json["ranking"][i]["weighted_cost"].get<double>() >= json["ranking"][i - 1]["weighted_cost"].get<double>());
+    const auto preset_json = nlohmann::json::parse(std::ifstream(preset));
+    CHECK(preset_json["technique"] == "CookTorranceGGX");
+    CHECK(preset_json["parameters"]["GGXAlpha"].get<double>() == doctest::Approx(0.15).epsilon(1e-6));
+    CHECK(run(std::string("render ") + FXVIEW_SOURCE_EFFECTS_DIR + "/brdf/analytic.fx --preset " + preset + " --size 32x32 --out " +
+              temp_path("fit/ggx.png"))
+              .exit_code == 0);
+    std::ifstream csv(ranking);
+    std::string header, first;
+    std::getline(csv, header);
+    std::getline(csv, first);
+    CHECK(header.rfind("rank,model,weighted_cost", 0) == 0);
+    CHECK(first.rfind("1,ggx,", 0) == 0);
+    // The text table names every model, best first.
+    const Result text = run("fit " + data + " --model all");
+    CHECK(text.out.find("1    ggx") != std::string::npos);
+    CHECK(text.out.find("ward") != std::string::npos);
+}
+
+TEST_CASE("fit --model: unknown models, the thesis solver on other models and anisotropy on MERL files are usage errors") {
+    const std::string data = temp_path("fit/small.csv"), merl = temp_path("fit/small.binary");
+    REQUIRE(run("brdf-grid --model ggx --samples 4 7 7 --out " + data).exit_code == 0);
+    CHECK(run("fit " + data + " --model nonsense").exit_code == 2);
+    CHECK(run("fit " + data + " --model ggx --solver thesis").exit_code == 2);
+    CHECK(run("fit " + data + " --clear-coat 0.5").exit_code == 2);
+    REQUIRE(run("brdf-grid --model ggx --merl-out --out " + merl).exit_code == 0);
+    const Result aniso = run("fit " + merl + " --model ashikhmin-aniso");
+    CHECK(aniso.exit_code == 2);
+    CHECK(aniso.err.find("isotropic") != std::string::npos);
+}
+
 TEST_CASE("fit and brdf-grid reject bad input: exit 2 for arguments, 1 naming file and line for data") {
     CHECK(run("brdf-grid --model nonsense --out " + temp_path("x.csv")).exit_code == 2);
     CHECK(run("brdf-grid --model pbr --param shininess=3 --out " + temp_path("x.csv")).exit_code == 2);

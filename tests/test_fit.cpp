@@ -12,7 +12,7 @@
 #include "fit/fit_preview.hpp"
 #include "brdf/models.hpp"
 #include "core/error.hpp"
-#include "fit/ashikhmin_fit.hpp"
+#include "fit/brdf_fit.hpp"
 #include "fit/brdf_grid.hpp"
 #include "fit/merl.hpp"
 #include "test_support.hpp"
@@ -85,7 +85,7 @@ TEST_CASE("BRDF grid files: round trip, and errors that name file and line") {
 
 TEST_CASE("synthetic BRDFs of the model are fitted exactly (the thesis' own check of its LM)") {
     const std::array<double, 3> cd{0.10, 0.25, 0.40}, cs{0.60, 0.45, 0.30};
-    const fit::FitResult fit = fit::fit_ashikhmin_shirley(synthetic(80.0, cd, cs), {.solver = fit::Solver::Thesis});
+    const fit::FitResult fit = fit::fit_brdf(synthetic(80.0, cd, cs), {.solver = fit::Solver::Thesis});
     // Start ns = 25, cd = cs = 0.2 as in the thesis; 500 iterations. The data are the model's, so
     // the minimum is exact; 1e-6 is far below any fitting effect and far above double rounding.
     CHECK(fit.ns == doctest::Approx(80.0).epsilon(1e-6));
@@ -106,7 +106,7 @@ TEST_CASE("synthetic BRDFs of the model are fitted exactly (the thesis' own chec
     }
     CHECK(fit.converged);
     // The default solver finds the same exact minimum, without a start.
-    const fit::FitResult global = fit::fit_ashikhmin_shirley(synthetic(80.0, cd, cs), {});
+    const fit::FitResult global = fit::fit_brdf(synthetic(80.0, cd, cs), {});
     CHECK(global.ns == doctest::Approx(80.0).epsilon(1e-6));
     for (size_t c = 0; c < 3; ++c) {
         CHECK(global.cd[c] == doctest::Approx(cd[c]).epsilon(1e-6));
@@ -136,16 +136,16 @@ TEST_CASE("fitting another model's data: a finite error that the fit reduces, ne
         const glm::dvec3 f = brdf::evaluate(ggx, {{0, 0, 1}, l, v, {1, 0, 0}});
         return std::array<double, 3>{f.r, f.g, f.b};
     });
-    const fit::FitResult fit = fit::fit_ashikhmin_shirley(data, {});
+    const fit::FitResult fit = fit::fit_brdf(data, {});
     CHECK(std::isfinite(fit.error_rgb));
-    const fit::FitResult thesis = fit::fit_ashikhmin_shirley(data, {.solver = fit::Solver::Thesis});
+    const fit::FitResult thesis = fit::fit_brdf(data, {.solver = fit::Solver::Thesis});
     CHECK(thesis.error_per_iteration.back() < 0.5 * thesis.error_per_iteration.front());
     CHECK(fit.cost <= thesis.cost * (1 + 1e-9));
     CHECK(fit.ns > 10);
     CHECK(fit.cs[0] > fit.cs[2]);  // gold-like: more red than blue in the highlight
-    CHECK_THROWS_AS(fit::fit_ashikhmin_shirley(data, {.limit_deg = 0}), UsageError);
+    CHECK_THROWS_AS(fit::fit_brdf(data, {.limit_deg = 0}), UsageError);
     // Without a limit the grazing samples enter (the light at 90° only with weight 0, left out): still finite.
-    const fit::FitResult all = fit::fit_ashikhmin_shirley(data, {.limit_deg = 90});
+    const fit::FitResult all = fit::fit_brdf(data, {.limit_deg = 90});
     CHECK(std::isfinite(all.error_rgb));
     CHECK(all.ns > 0);
 }
@@ -180,7 +180,7 @@ TEST_CASE("MERL binary BRDFs: the reference reader's bins, scales and errors") {
     CHECK(grid.values[1234][1] == doctest::Approx(0.2).epsilon(1e-14));
     CHECK(grid.values[1234][2] == doctest::Approx(0.1).epsilon(1e-14));
     // A Lambertian MERL file is fitted as cd = π f, cs = 0.
-    const fit::FitResult lambert = fit::fit_ashikhmin_shirley(grid, {});
+    const fit::FitResult lambert = fit::fit_brdf(grid, {});
     CHECK(lambert.cd[0] == doctest::Approx(0.3 * kPi).epsilon(1e-6));
     CHECK(std::abs(lambert.cs[0]) < 1e-6);
 
@@ -242,7 +242,7 @@ TEST_CASE("MERL files are fitted at full density: every measured bin at its cent
     for (size_t i = 0; i < bins; i += 97) model.data[i] = -1.0;  // a sensor's gaps, in red
     const fit::Observations data = fit::observations(model, 75.0);
     CHECK(data.masked > unmeasured_before);
-    const fit::FitResult fit = fit::fit_ashikhmin_shirley(data, {});
+    const fit::FitResult fit = fit::fit_brdf(data, {});
     CHECK(fit.samples_used == static_cast<int>(data.samples.size()));
     CHECK(fit.samples_masked == data.masked);
     // Exact data of the model: 1e-6 as for the grid, far below fitting effects, far above rounding.

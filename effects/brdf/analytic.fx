@@ -1,7 +1,8 @@
 // Analytic BRDFs under one point light (DOMAIN.md §7): the PBR sandbox of seed 004 (metallic-
 // roughness Cook-Torrance with GGX), the energy-conserving Phong and Cook-Torrance with Beckmann of
-// seed 001, and Ashikhmin-Shirley of seed 000 (anisotropic, and the simplified model its fitter
-// uses). Outgoing radiance L = f(l, v) · E · (n·l), linear RGB. CPU references:
+// seed 001, Ashikhmin-Shirley of seed 000 (anisotropic, and the simplified model its fitter uses),
+// and the further models `fxview fit --model` offers (Cook-Torrance GGX and Beckmann with Schlick F0,
+// Blinn-Phong, Ward). Outgoing radiance L = f(l, v) · E · (n·l), linear RGB. CPU references:
 // viewer/reference/brdf_reference.cpp on viewer/brdf/models.cpp.
 #include "standard.glsl"
 #include "brdf.glsl"
@@ -36,6 +37,26 @@ uniform float Nv < string UIName = "nv (across)"; float UIMin = 1; float UIMax =
 uniform vec3 FitDiffuse < string UIName = "cd"; string UIWidget = "color"; string UIGroup = "Ashikhmin-Shirley fit (eq. 4.28)"; > = {0.2, 0.2, 0.2};
 uniform vec3 FitSpecular < string UIName = "cs"; string UIWidget = "color"; string UIGroup = "Ashikhmin-Shirley fit (eq. 4.28)"; > = {0.2, 0.2, 0.2};
 uniform float FitExponent < string UIName = "ns"; float UIMin = 1; float UIMax = 10000; string UIGroup = "Ashikhmin-Shirley fit (eq. 4.28)"; > = 50.0;
+
+uniform vec3 GGXDiffuse < string UIName = "kd"; string UIWidget = "color"; string UIGroup = "Cook-Torrance (GGX)"; > = {0.05, 0.05, 0.05};
+uniform vec3 GGXF0 < string UIName = "F0 (reflectance at normal incidence)"; string UIWidget = "color"; string UIGroup = "Cook-Torrance (GGX)"; > = {0.9, 0.6, 0.3};
+uniform float GGXAlpha < string UIName = "Width alpha"; float UIMin = 0.001; float UIMax = 1; float UIStep = 0.001; string UIGroup = "Cook-Torrance (GGX)";
+                         string UIHelp = "GGX width (alpha itself, not roughness squared); height-correlated Smith shadowing"; > = 0.2;
+
+uniform vec3 CTSDiffuse < string UIName = "kd"; string UIWidget = "color"; string UIGroup = "Cook-Torrance (Beckmann, Schlick F0)"; > = {0.3, 0.1, 0.05};
+uniform vec3 CTSF0 < string UIName = "F0 (reflectance at normal incidence)"; string UIWidget = "color"; string UIGroup = "Cook-Torrance (Beckmann, Schlick F0)"; > = {0.04, 0.04, 0.04};
+uniform float CTSSlope < string UIName = "Slope m"; float UIMin = 0.001; float UIMax = 1; float UIStep = 0.001; string UIGroup = "Cook-Torrance (Beckmann, Schlick F0)";
+                         string UIHelp = "RMS slope of the microfacets; V-cavity shadowing"; > = 0.2;
+
+uniform vec3 BlinnDiffuse < string UIName = "kd"; string UIWidget = "color"; string UIGroup = "Blinn-Phong"; > = {0.4, 0.1, 0.1};
+uniform vec3 BlinnSpecular < string UIName = "ks"; string UIWidget = "color"; string UIGroup = "Blinn-Phong"; > = {0.3, 0.3, 0.3};
+uniform float BlinnExponent < string UIName = "Exponent n"; float UIMin = 0.01; float UIMax = 10000; string UIGroup = "Blinn-Phong";
+                              string UIHelp = "Normalised lobe (n + 8)/(8 pi) (n.h)^n"; > = 50.0;
+
+uniform vec3 WardDiffuse < string UIName = "kd"; string UIWidget = "color"; string UIGroup = "Ward"; > = {0.1, 0.3, 0.1};
+uniform vec3 WardSpecular < string UIName = "ks"; string UIWidget = "color"; string UIGroup = "Ward"; > = {0.1, 0.1, 0.1};
+uniform float WardAlpha < string UIName = "Width alpha"; float UIMin = 0.001; float UIMax = 1; float UIStep = 0.001; string UIGroup = "Ward";
+                          string UIHelp = "RMS slope of the isotropic Ward lobe"; > = 0.15;
 
 // Every technique: f at this fragment times E (n·l); black where light or eye is below the surface.
 Frame frame_here(vec3 position, vec3 normal, vec3 tangent) { return make_frame(position, normal, tangent, LightPosition, CameraPosition); }
@@ -107,11 +128,59 @@ GLSLShader AshikhminShirleyFitFS {
     }
 }
 
+GLSLShader CookTorranceGGXFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
+        color = radiance(f, visible(f) ? cook_torrance_ggx(f, GGXDiffuse, GGXF0, GGXAlpha) : vec3(0.0));
+        fx_capture();
+    }
+}
+
+GLSLShader CookTorranceBeckmannSchlickFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
+        color = radiance(f, visible(f) ? cook_torrance_beckmann_schlick(f, CTSDiffuse, CTSF0, CTSSlope) : vec3(0.0));
+        fx_capture();
+    }
+}
+
+GLSLShader BlinnPhongFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
+        color = radiance(f, visible(f) ? blinn_phong(f, BlinnDiffuse, BlinnSpecular, BlinnExponent) : vec3(0.0));
+        fx_capture();
+    }
+}
+
+GLSLShader WardFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
+        color = radiance(f, visible(f) ? ward_isotropic(f, WardDiffuse, WardSpecular, WardAlpha) : vec3(0.0));
+        fx_capture();
+    }
+}
+
 technique Lambert { pass p0 { VertexShader = StandardVS; FragmentShader = LambertFS; } }
 technique PBR < bool Default = true; > { pass p0 { VertexShader = StandardVS; FragmentShader = PBRFS; } }
 technique ModifiedPhong { pass p0 { VertexShader = StandardVS; FragmentShader = ModifiedPhongFS; } }
 technique CookTorranceBeckmann { pass p0 { VertexShader = StandardVS; FragmentShader = CookTorranceBeckmannFS; } }
 technique AshikhminShirley { pass p0 { VertexShader = StandardVS; FragmentShader = AshikhminShirleyFS; } }
+technique CookTorranceGGX { pass p0 { VertexShader = StandardVS; FragmentShader = CookTorranceGGXFS; } }
+technique CookTorranceBeckmannSchlick { pass p0 { VertexShader = StandardVS; FragmentShader = CookTorranceBeckmannSchlickFS; } }
+technique BlinnPhong { pass p0 { VertexShader = StandardVS; FragmentShader = BlinnPhongFS; } }
+technique Ward { pass p0 { VertexShader = StandardVS; FragmentShader = WardFS; } }
 // The fit as a plugin (docs/plugins.md): `fxview plugin run effects/brdf/analytic.fx FitAshikhminShirley`
 // or the viewer's Plugins tab fits the model to a measured BRDF file and shows it with AshikhminShirleyFit.
 plugin FitAshikhminShirley < string Type = "brdf-fit"; string UIName = "Fit Ashikhmin-Shirley to a measured BRDF file";
@@ -119,3 +188,7 @@ plugin FitAshikhminShirley < string Type = "brdf-fit"; string UIName = "Fit Ashi
                              string Targets = "FitDiffuse, FitSpecular, FitExponent"; string Technique = "AshikhminShirleyFit"; >;
 
 technique AshikhminShirleyFit { pass p0 { VertexShader = StandardVS; FragmentShader = AshikhminShirleyFitFS; } }
+// Any model of `fxview fit --model` fits the same way; its Targets default to the model's own
+// parameters here (GGXDiffuse, GGXF0, GGXAlpha) and its technique to CookTorranceGGX.
+plugin FitCookTorranceGGX < string Type = "brdf-fit"; string UIName = "Fit Cook-Torrance (GGX) to a measured BRDF file";
+                            string DataFile = "sample-brdf.csv"; string Model = "ggx"; >;

@@ -73,3 +73,26 @@ vec3 ashikhmin_shirley(Frame f, vec3 rd, vec3 rs, float nu, float nv) {
 vec3 ashikhmin_shirley_fit(Frame f, vec3 cd, vec3 cs, float ns) {
     return cd / kPi + (ns + 1.0) / (8.0 * kPi) * pow(f.nh, ns) / (f.vh * max(f.nl, f.nv)) * cs;
 }
+// The further models the fitter offers (viewer/fit/fit_models.cpp), Schlick's F0 per channel.
+float smith_ggx_correlated(float nl, float nv, float alpha) {
+    float a2 = alpha * alpha;
+    float lambda_l = 0.5 * (sqrt(1.0 + a2 * (1.0 - nl * nl) / (nl * nl)) - 1.0);
+    float lambda_v = 0.5 * (sqrt(1.0 + a2 * (1.0 - nv * nv) / (nv * nv)) - 1.0);
+    return 1.0 / (1.0 + lambda_l + lambda_v);
+}
+vec3 cook_torrance_ggx(Frame f, vec3 kd, vec3 f0, float alpha) {
+    float dg = ggx(f.nh, alpha) * smith_ggx_correlated(f.nl, f.nv, alpha);
+    return kd / kPi + dg / (4.0 * f.nl * f.nv) * fresnel_schlick(f0, max(f.vh, 0.0));
+}
+vec3 cook_torrance_beckmann_schlick(Frame f, vec3 kd, vec3 f0, float m) {
+    float dg = beckmann(f.nh, m, false) * v_cavity(f);
+    return kd / kPi + dg / (4.0 * f.nl * f.nv) * fresnel_schlick(f0, max(f.vh, 0.0));
+}
+vec3 blinn_phong(Frame f, vec3 kd, vec3 ks, float n) {
+    return kd / kPi + ks * (n + 8.0) / (8.0 * kPi) * pow(max(f.nh, 0.0), n);
+}
+vec3 ward_isotropic(Frame f, vec3 kd, vec3 ks, float alpha) {
+    float a2 = alpha * alpha, cos2 = f.nh * f.nh;
+    float tan2 = (1.0 - cos2) / cos2;
+    return kd / kPi + ks * exp(-tan2 / a2) / (4.0 * kPi * a2 * sqrt(f.nl * f.nv));
+}

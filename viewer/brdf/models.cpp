@@ -88,4 +88,37 @@ glm::dvec3 evaluate(const AshikhminShirleyFit& model, const Directions& d) {
     return model.cd / kPi + lobe * model.cs;
 }
 
+double smith_ggx_correlated(double n_dot_l, double n_dot_v, double alpha) {
+    const auto lambda = [alpha](double x) { return 0.5 * (std::sqrt(1.0 + alpha * alpha * (1.0 - x * x) / (x * x)) - 1.0); };
+    return 1.0 / (1.0 + lambda(n_dot_l) + lambda(n_dot_v));
+}
+
+glm::dvec3 evaluate(const CookTorranceGGX& model, const Directions& d) {
+    const Cosines c = cosines(d);
+    if (!c.visible) return glm::dvec3(0.0);
+    const double dg = ggx_distribution(c.nh, model.alpha) * smith_ggx_correlated(c.nl, c.nv, model.alpha);
+    return model.kd / kPi + dg / (4.0 * c.nl * c.nv) * schlick(model.f0, std::max(c.vh, 0.0));
+}
+
+glm::dvec3 evaluate(const CookTorranceBeckmannSchlick& model, const Directions& d) {
+    const Cosines c = cosines(d);
+    if (!c.visible) return glm::dvec3(0.0);
+    const double dg = beckmann_distribution(c.nh, model.m) * v_cavity_geometry(c.nh, c.nv, c.nl, c.vh);
+    return model.kd / kPi + dg / (4.0 * c.nl * c.nv) * schlick(model.f0, std::max(c.vh, 0.0));
+}
+
+glm::dvec3 evaluate(const BlinnPhong& model, const Directions& d) {
+    const Cosines c = cosines(d);
+    if (!c.visible) return glm::dvec3(0.0);
+    return model.kd / kPi + model.ks * (model.exponent + 8.0) / (8.0 * kPi) * std::pow(std::max(c.nh, 0.0), model.exponent);
+}
+
+glm::dvec3 evaluate(const Ward& model, const Directions& d) {
+    const Cosines c = cosines(d);
+    if (!c.visible) return glm::dvec3(0.0);
+    const double a2 = model.alpha * model.alpha, cos2 = c.nh * c.nh;
+    const double tan2 = (1.0 - cos2) / cos2;
+    return model.kd / kPi + model.ks * std::exp(-tan2 / a2) / (4.0 * kPi * a2 * std::sqrt(c.nl * c.nv));
+}
+
 }  // namespace fxview::brdf

@@ -54,11 +54,47 @@ struct AshikhminShirleyFit {
     double ns = 50.0;
 };
 
+// Models the fitter offers besides the thesis' (fit/fit_models.cpp); each has a technique in
+// effects/brdf/analytic.fx.
+// Cook-Torrance with GGX: kd/π + D G F / (4 (n·l)(n·v)), D = GGX of width α (not roughness²), G the
+// height-correlated Smith term of GGX (Heitz 2014), F Fresnel-Schlick with F0 per channel.
+struct CookTorranceGGX {
+    glm::dvec3 kd{0.1}, f0{0.04};
+    double alpha = 0.2;
+};
+
+// Cook-Torrance as Cook and Torrance wrote it, with Schlick's F0: kd/π + D G F / (4 (n·l)(n·v)),
+// normalised Beckmann D of rms slope m, the V-cavity G, Fresnel-Schlick.
+struct CookTorranceBeckmannSchlick {
+    glm::dvec3 kd{0.1}, f0{0.04};
+    double m = 0.2;
+};
+
+// Normalised Blinn-Phong: kd/π + ks (n + 8)/(8π) (n·h)ⁿ.
+struct BlinnPhong {
+    glm::dvec3 kd{0.5}, ks{0.2};
+    double exponent = 50.0;
+};
+
+// Ward's isotropic model (1992): kd/π + ks exp(−tan²θh / α²) / (4π α² √((n·l)(n·v))).
+struct Ward {
+    glm::dvec3 kd{0.5}, ks{0.1};
+    double alpha = 0.15;
+};
+
+// The height-correlated Smith masking-shadowing of GGX: 1 / (1 + Λ(n·l) + Λ(n·v)),
+// Λ(x) = (√(1 + α² (1 − x²)/x²) − 1) / 2.
+double smith_ggx_correlated(double n_dot_l, double n_dot_v, double alpha);
+
 glm::dvec3 evaluate(const Lambert& model, const Directions& d);
 glm::dvec3 evaluate(const MetallicRoughness& model, const Directions& d);
 glm::dvec3 evaluate(const ModifiedPhong& model, const Directions& d);
 glm::dvec3 evaluate(const CookTorranceBeckmann& model, const Directions& d);
 glm::dvec3 evaluate(const AshikhminShirley& model, const Directions& d);
 glm::dvec3 evaluate(const AshikhminShirleyFit& model, const Directions& d);
+glm::dvec3 evaluate(const CookTorranceGGX& model, const Directions& d);
+glm::dvec3 evaluate(const CookTorranceBeckmannSchlick& model, const Directions& d);
+glm::dvec3 evaluate(const BlinnPhong& model, const Directions& d);
+glm::dvec3 evaluate(const Ward& model, const Directions& d);
 
 }  // namespace fxview::brdf

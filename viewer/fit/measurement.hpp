@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include "fit/ashikhmin_fit.hpp"
+#include "fit/brdf_fit.hpp"
 #include "fit/brdf_grid.hpp"
 #include "fit/merl.hpp"
 

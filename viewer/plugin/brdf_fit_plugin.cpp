@@ -3,10 +3,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <sstream>
 
 #include "effect/parser.hpp"
-#include "fit/ashikhmin_fit.hpp"
+#include "fit/brdf_fit.hpp"
 #include "fit/fit_preview.hpp"
 #include "fit/measurement.hpp"
 #include "render/effect_resources.hpp"
@@ -29,9 +31,12 @@ public:
     BrdfFit(const effect::Effect& effect, const effect::PluginDeclaration& d, const std::vector<std::string>& texture_dirs)
         : name_(d.name), effect_path_(effect.path), access_(effect.access), limits_(effect.limits), texture_dirs_(texture_dirs) {
         const auto fail = [&](const std::string& message) { throw fxview::effect::EffectError(d.where, "plugin " + d.name + " (brdf-fit): " + message); };
-        const std::string model = d.text("Model");
-        if (!model.empty() && model != "ashikhmin-fit")
-            fail("Model '" + model + "' is not available (ashikhmin-fit: the thesis' simplified Ashikhmin-Shirley)");
+        options_.model = d.text("Model").empty() ? fit::kDefaultModel : d.text("Model");
+        try {
+            model_ = fit::find_model(options_.model);
+        } catch (const UsageError& e) {
+            fail(std::string("Model: ") + e.what());
+        }
         // The data: the file behind one of the effect's samplers (Data), or a file of its own (DataFile),
         // which the input `NAME.Data` overrides (the viewer's data-file field, `--set`-like).
         data_ = d.text("Data");
@@ -49,20 +54,24 @@ public:
             data_ = d.name + ".Data";
             texture_ = data_;
         }
-        const std::vector<std::string> targets = split(d.text("Targets"));
-        static const char* const kTypes[] = {"vec3", "vec3", "float"};
-        if (targets.size() != 3) fail("Targets must name three parameters: cd (vec3), cs (vec3), ns (float)");
-        for (size_t i = 0; i < 3; ++i) {
+        // Targets: one effect parameter per model parameter, in the model's order; by default the
+        // model's own uniforms (those of effects/brdf/analytic.fx).
+        const std::vector<fit::ModelParameter> wanted = model_->parameters();
+        std::string expected;
+        for (const auto& w : wanted) expected += (expected.empty() ? "" : ", ") + w.name + " (" + (w.colour ? "vec3" : "float") + ")";
+        std::vector<std::string> targets = split(d.text("Targets"));
+        if (d.text("Targets").empty())
+            for (const auto& w : wanted) targets.push_back(w.uniform);
+        if (targets.size() != wanted.size()) fail("Targets must name " + std::to_string(wanted.size()) + " parameters: " + expected);
+        for (size_t i = 0; i < wanted.size(); ++i) {
+            const char* type = wanted[i].colour ? "vec3" : "float";
             const effect::Parameter* p = effect.find_parameter(targets[i]);
-            if (!p) fail("Targets: the effect has no parameter '" + targets[i] + "'");
-            if (p->type != kTypes[i] || p->array_size != 0 || !p->semantic.empty())
-                fail("Targets: " + targets[i] + " must be a " + kTypes[i] + " without semantic (it receives " +
-                     (i == 0 ? "cd" : i == 1 ? "cs" : "ns") + ")");
+            if (!p) fail("Targets: the effect has no parameter '" + targets[i] + "' (expected " + expected + ")");
+            if (p->type != type || p->array_size != 0 || !p->semantic.empty())
+                fail("Targets: " + targets[i] + " must be a " + type + " without semantic (it receives " + wanted[i].name + ")");
         }
-        cd_ = targets[0];
-        cs_ = targets[1];
-        ns_ = targets[2];
-        technique_ = d.text("Technique");
+        targets_ = targets;
+        technique_ = d.text("Technique").empty() && effect.find_technique(model_->technique()) ? model_->technique() : d.text("Technique");
         if (!technique_.empty() && !effect.find_technique(technique_)) fail("Technique: the effect has no technique '" + technique_ + "'");
         if (const effect::Annotation* limit = d.find("Limit")) {
             if (limit->value.is_string || limit->value.numbers.size() != 1 || !(limit->value.numbers[0] >= 5 && limit->value.numbers[0] <= 90))
@@ -90,12 +99,12 @@ public:
     std::string type() const override { return "brdf-fit"; }
     std::string description() const override {
         char text[200];
-        std::snprintf(text, sizeof text, "fit Ashikhmin-Shirley to the measured BRDF of %s (limit %.0f deg, %s solver)", data_.c_str(),
+        std::snprintf(text, sizeof text, "fit %s to the measured BRDF of %s (limit %.0f deg, %s solver)", model_->title().c_str(), data_.c_str(),
                       options_.limit_deg, options_.solver == fit::Solver::Thesis ? "thesis" : "global");
         return text;
     }
     std::vector<std::string> inputs() const override { return {data_}; }
-    std::vector<std::string> outputs() const override { return {cd_, cs_, ns_}; }
+    std::vector<std::string> outputs() const override { return targets_; }
 
     Result run(const effect::ParameterValues& values, const Reporter& reporter, const std::string& user_file) const override {
         const std::string path = user_file.empty() ? data_path(values) : user_file;
@@ -105,12 +114,16 @@ public:
         const fit::Measurement measurement = fit::read_measurement_for_fit(path, limits_);
         fit::FitOptions options = options_;
         options.on_progress = [&](const fit::FitProgress& p) {
-            reporter.update({p.fraction, p.stage, {{cd_, {p.cd.begin(), p.cd.end()}}, {cs_, {p.cs.begin(), p.cs.end()}}, {ns_, {p.ns}}}, p.cost});
+            reporter.update({p.fraction, p.stage, named(model_->values(p.cd, p.cs, p.shape.empty() ? std::vector<double>{p.ns} : p.shape)), p.cost});
         };
-        const fit::FitResult r = fit::fit_ashikhmin_shirley(fit::observations(measurement, options.limit_deg), options);
+        if (measurement.merl && model_->anisotropic())
+            throw Error(path + ": a MERL file is isotropic by construction; model " + model_->name() + " needs a grid");
+        const fit::FitResult r = fit::fit_brdf(fit::observations(measurement, options.limit_deg), options);
 
         Result result;
-        result.parameters = {{cd_, {r.cd.begin(), r.cd.end()}}, {cs_, {r.cs.begin(), r.cs.end()}}, {ns_, {r.ns}}};
+        std::vector<std::vector<double>> fitted_values;
+        for (const fit::FittedParameter& p : r.parameters) fitted_values.push_back(p.values);
+        result.parameters = named(fitted_values);
         result.technique = technique_;
         result.converged = r.converged;
         result.warnings = r.warnings;
@@ -121,12 +134,18 @@ public:
         std::snprintf(line, sizeof line, "%d directions inside %.0f deg of %s, %s solver: %s", r.samples_used, options.limit_deg,
                       path.c_str(), r.solver.c_str(), r.stop_reason.c_str());
         result.summary.push_back(line);
-        std::snprintf(line, sizeof line, "ns %.4f  cd %.6f %.6f %.6f  cs %.6f %.6f %.6f", r.ns, r.cd[0], r.cd[1], r.cd[2], r.cs[0], r.cs[1],
-                      r.cs[2]);
-        result.summary.push_back(line);
+        std::string fitted = r.model + ":";
+        for (const fit::FittedParameter& p : r.parameters) {
+            fitted += "  " + p.name;
+            for (const double v : p.values) {
+                std::snprintf(line, sizeof line, " %.6g", v);
+                fitted += line;
+            }
+        }
+        result.summary.push_back(fitted);
         std::snprintf(line, sizeof line, "weighted cost %.6g (optimum %.6g)%s", r.cost, r.optimum_cost, r.converged ? "" : "  NOT CONVERGED");
         result.summary.push_back(line);
-        result.numbers = {{"weighted_cost", r.cost}, {"optimum_cost", r.optimum_cost}, {"samples_used", r.samples_used},
+        result.numbers = {{"weighted_cost", r.cost}, {"weighted_rms", r.weighted_rms}, {"optimum_cost", r.optimum_cost}, {"samples_used", r.samples_used},
                           {"samples_masked", static_cast<double>(r.samples_masked)}, {"error_rgb", r.error_rgb}, {"limit_deg", options.limit_deg}};
         fit::PreviewOptions preview_options;
         preview_options.limit_deg = options.limit_deg;
@@ -141,6 +160,13 @@ public:
     }
 
 private:
+    // The model's parameter values under the effect's names (Targets).
+    std::map<std::string, std::vector<double>> named(const std::vector<std::vector<double>>& values) const {
+        std::map<std::string, std::vector<double>> out;
+        for (size_t i = 0; i < targets_.size() && i < values.size(); ++i) out[targets_[i]] = values[i];
+        return out;
+    }
+
     // The data file as the renderer would load it: the sampler's override (--set, preset, viewer),
     // else its ResourceName resolved like any texture; under the effect's file-access policy.
     std::string data_path(const effect::ParameterValues& values) const {
@@ -152,7 +178,9 @@ private:
         return path;
     }
 
-    std::string name_, effect_path_, data_, texture_, file_, cd_, cs_, ns_, technique_;
+    std::string name_, effect_path_, data_, texture_, file_, technique_;
+    std::vector<std::string> targets_;
+    std::shared_ptr<const fit::FitModel> model_;
     FileAccessPolicy access_;
     ResourceLimits limits_;
     std::vector<std::string> texture_dirs_;

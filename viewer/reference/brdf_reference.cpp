@@ -63,6 +63,18 @@ std::map<std::string, Reference> brdf_references() {
     all.emplace("AshikhminShirleyFit", make([](const ReferenceContext& c) {
         return brdf::AshikhminShirleyFit{colour(c, "FitDiffuse"), colour(c, "FitSpecular"), c.number("FitExponent")};
     }, 1e-4, kWhy));
+    all.emplace("CookTorranceGGX", make([](const ReferenceContext& c) {
+        return brdf::CookTorranceGGX{colour(c, "GGXDiffuse"), colour(c, "GGXF0"), c.number("GGXAlpha")};
+    }, 1e-4, kWhy));
+    all.emplace("CookTorranceBeckmannSchlick", make([](const ReferenceContext& c) {
+        return brdf::CookTorranceBeckmannSchlick{colour(c, "CTSDiffuse"), colour(c, "CTSF0"), c.number("CTSSlope")};
+    }, 1e-4, kWhy));
+    all.emplace("BlinnPhong", make([](const ReferenceContext& c) {
+        return brdf::BlinnPhong{colour(c, "BlinnDiffuse"), colour(c, "BlinnSpecular"), c.number("BlinnExponent")};
+    }, 1e-4, kWhy));
+    all.emplace("Ward", make([](const ReferenceContext& c) {
+        return brdf::Ward{colour(c, "WardDiffuse"), colour(c, "WardSpecular"), c.number("WardAlpha")};
+    }, 1e-4, kWhy));
     return all;
 }
 

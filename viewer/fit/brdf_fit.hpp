@@ -1,8 +1,9 @@
-// Fitting the simplified Ashikhmin-Shirley model (seed 000 eq. 4.28) to a measured BRDF grid in the
-// thesis' two stages (DOMAIN.md §8): (1) the mean of RGB with one cd, cs and the exponent ns by
-// Levenberg-Marquardt (derivatives eq. 4.29); (2) with ns fixed, cd and cs per channel, a linear
-// least-squares problem (eq. 4.30) solved exactly. Residuals eq. 4.25/4.26/4.27: solid-angle weight ×
-// cos θi × (measured − model) / Σw, samples beyond the limit angle left out.
+// Fitting an analytic BRDF model (fit_model.hpp; the default is the thesis' simplified
+// Ashikhmin-Shirley, seed 000 eq. 4.28) to a measured BRDF. Residuals eq. 4.25/4.26/4.27: solid-angle
+// weight × cos θi × (measured − model) / Σw, samples beyond the limit angle left out. Two solvers: the
+// global one (separable_solver.hpp) for every model, and the thesis' two stages (DOMAIN.md §8) for its
+// own model: (1) the mean of RGB with one cd, cs and ns by its Levenberg-Marquardt schedule (eq. 4.29);
+// (2) with ns fixed, cd and cs per channel by linear least squares (eq. 4.30).
 #pragma once
 #include <array>
 #include <functional>
@@ -10,25 +11,26 @@
 #include <vector>
 
 #include "fit/brdf_grid.hpp"
+#include "fit/fit_model.hpp"
 #include "fit/levenberg_marquardt.hpp"
 #include "fit/merl.hpp"
+#include "fit/separable_solver.hpp"
 
 namespace fxview::fit {
 
-// global: the default. The model is linear in cd and cs, so for each ns the best scales per channel
-//   are a bounded linear least-squares problem solved exactly (cd >= 0, 0 <= cs <= 1, the renderer
-//   form's Rs <= 1); ns is searched over its whole range on a log scale (20 points per decade from
-//   1e-2 to 1e6), refined by golden-section search, and everything is polished together by a bounded
-//   Levenberg-Marquardt (bounded_levenberg_marquardt.hpp). It reaches the global optimum of the
-//   weighted RGB cost and reports why it stopped and which parameters sit at a bound.
-// thesis: seed 000's two stages with its λ schedule, as its figures were made; reported against the
-//   global optimum, so that a stall is never silent.
+// global: the default, for every model. The models are linear in their two scales per channel, so
+//   for each shape the best scales are a bounded linear least-squares problem solved exactly (e.g.
+//   cd >= 0, 0 <= cs <= 1, the renderer form's Rs <= 1); the shape (ns; nu, nv; alpha) is searched over
+//   its whole range on a log scale and everything is polished together by a bounded
+//   Levenberg-Marquardt (separable_solver.hpp). It reaches the global optimum of the weighted RGB cost
+//   and reports why it stopped and which parameters sit at a bound.
+// thesis: seed 000's two stages with its λ schedule, as its figures were made (its own model only);
+//   reported against the global optimum, so that a stall is never silent.
 enum class Solver { Global, Thesis };
 
-// The residual's scale (Ngan et al. 2005 compare them): linear (the thesis' eq. 4.25), or compressed
-// so that the highlight's peak does not outweigh the rest: cube root or log of (value + ε), ε = 1e-3 ×
-// the data's mean value (so that values near 0 keep a finite slope).
-enum class Residual { Linear, CubeRoot, Log };
+// The residual's scale (Ngan et al. 2005 compare them; enum Residual in separable_solver.hpp): linear
+// (the thesis' eq. 4.25), or compressed so that the highlight's peak does not outweigh the rest: cube
+// root or log of (value + ε), ε = 1e-3 × the data's mean value (values near 0 keep a finite slope).
 // The loss on each sample's residual: least squares, or robust against outliers (Huber: linear beyond
 // the scale; Cauchy: logarithmic). Solved by iteratively reweighted least squares.
 enum class Loss { Squared, Huber, Cauchy };
@@ -37,12 +39,14 @@ enum class Loss { Squared, Huber, Cauchy };
 struct FitProgress {
     double fraction = 0;  // 0..1 of the expected work
     std::string stage;    // "search", "polish", "stage 1"
-    double ns = 0;
+    double ns = 0;        // the first shape parameter
     std::array<double, 3> cd{}, cs{};  // the current best scales (the thesis' stage 1: the mean's)
     double cost = 0;                   // the current weighted cost (the thesis' stage 1: e²)
+    std::vector<double> shape;         // every shape parameter
 };
 
 struct FitOptions {
+    std::string model = kDefaultModel;  // fit_model.hpp
     double limit_deg = 75.0;  // θi and θo beyond it are left out (0..90 in 5° steps in the thesis)
     int iterations = 500;     // the thesis solver's stage-1 iterations
     double start_ns = 25.0, start_cd = 0.2, start_cs = 0.2;  // the thesis solver's start
@@ -50,6 +54,10 @@ struct FitOptions {
     Residual residual = Residual::Linear;  // the global solver only
     Loss loss = Loss::Squared;             // the global solver only
     double loss_scale = 0;  // robust losses: the residual where they turn; 0: 1.345 × the residuals' robust σ (MAD), Huber's choice
+    // The clear-coat preprocessing of eq. 4.19-4.22: the data are the base under a clear coat of this
+    // refractive index (Fresnel removed, as the thesis' lacquer files); each value is divided by
+    // 1 − F(θi) and the model fits that base. 0: none.
+    double clear_coat_index = 0;
     // Called between steps; it may throw (e.g. plugin::Cancelled) to stop the fit.
     std::function<void(const FitProgress&)> on_progress;
 };
@@ -57,11 +65,22 @@ struct FitOptions {
 // The search range of ns (the global solver's bounds).
 constexpr double kMinExponent = 1e-2, kMaxExponent = 1e6;
 
+// One fitted parameter as the model's technique reads it.
+struct FittedParameter {
+    std::string name, uniform;
+    std::vector<double> values;  // r, g, b or one number
+};
+
 struct FitResult {
-    double ns = 0;
-    std::array<double, 3> cd{}, cs{};
+    std::string model, title, technique;  // the model fitted, what it is, its technique in analytic.fx
+    std::vector<double> shape;            // its shape parameters (fit_model.hpp)
+    std::vector<std::string> shape_names;
+    std::array<std::string, 2> scale_names;
+    std::vector<FittedParameter> parameters;  // as the technique reads them
+    double ns = 0;                     // shape[0] (the thesis' exponent for its model)
+    std::array<double, 3> cd{}, cs{};  // the model's two scales per channel (the thesis' cd and cs; kd and F0, ...)
     double mono_cd = 0, mono_cs = 0;  // stage 1
-    // For a renderer with a Fresnel weight (the thesis' shader, eq. 4.23/4.24): Rs = max(cs),
+    // The thesis' model only: for a renderer with a Fresnel weight (its shader, eq. 4.23/4.24): Rs = max(cs),
     // cs' = cs / Rs, cd' = cd / (1 − Rs); f = (1 − Rs) cd'/π + Rs cs' lobe is the same BRDF.
     double rs = 0;
     std::array<double, 3> rd_renderer{}, cs_renderer{};
@@ -75,6 +94,7 @@ struct FitResult {
     // with a compressed residual or a robust loss, Σ (w_j ω_j^½ (g(y) − g(f)))² with the final robust
     // weights ω_j.
     double cost = 0;
+    double weighted_rms = 0;  // √(Σ w² (y − f)² / (3 Σ w²)), linear residuals: the ranking's measure in 1/sr
     double optimum_cost = 0;  // the global search's cost (for the thesis solver: what it could have reached)
     std::string solver;       // "global" or "thesis"
     std::string stop_reason;  // why the last stage stopped
@@ -114,10 +134,15 @@ Observations observations(const MerlBrdf& merl, double limit_deg);
 // with n·h clamped to 1e-4 (ch. 4.2.4) so that its logarithm exists.
 double ashikhmin_lobe(const glm::dvec3& l, const glm::dvec3& v, double ns);
 
-FitResult fit_ashikhmin_shirley(const BrdfGrid& measured, const FitOptions& options);
-FitResult fit_ashikhmin_shirley(const Observations& data, const FitOptions& options);
+FitResult fit_brdf(const BrdfGrid& measured, const FitOptions& options);
+FitResult fit_brdf(const Observations& data, const FitOptions& options);
 
-// The model's values on the measured grid (for previews and error maps).
+// `--model all`: every model fitted with the same options (an anisotropic model only on data that can
+// show anisotropy), best weighted cost first.
+std::vector<FitResult> fit_all_models(const Observations& data, const FitOptions& options, bool isotropic_data);
+
+// The model's values on the measured grid (for previews and error maps) and at one direction pair.
 BrdfGrid evaluate_fit(const BrdfGrid& grid, const FitResult& fit);
+std::array<double, 3> evaluate_fit(const FitResult& fit, const glm::dvec3& l, const glm::dvec3& v);
 
 }  // namespace fxview::fit
