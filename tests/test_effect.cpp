@@ -379,3 +379,29 @@ TEST_CASE("an effect opens on its technique annotated Default, else on its first
         CHECK(effect::load_effect(kEffects + file, load_options()).default_technique().name == technique);
     }
 }
+
+TEST_CASE("a technique's parameters are those its programs read: analytic.fx on PBR reads PBR's, not Phong's") {
+    shared_context();
+    render::EffectSession session(std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/analytic.fx", load_options(), {});
+    const std::set<std::string> pbr = session.parameters_read("PBR");
+    for (const char* used : {"LightIrradiance", "BaseColor", "Metallic", "Roughness"}) CHECK(pbr.count(used) == 1);
+    for (const char* unused : {"PhongDiffuse", "Nu", "FitExponent", "GGXAlpha", "WardAlpha"}) CHECK(pbr.count(unused) == 0);
+    const std::set<std::string> ggx = session.parameters_read("CookTorranceGGX");
+    CHECK(ggx.count("GGXAlpha") == 1);
+    CHECK(ggx.count("Roughness") == 0);
+    CHECK(session.parameters_read("NoSuchTechnique").empty());
+    CHECK(!session.animated("PBR"));
+    CHECK(!session.renders_to_textures("PBR"));
+}
+
+TEST_CASE("techniques that read TIME are animated; passes into render targets are reported") {
+    shared_context();
+    const std::string timed = temp_path("timed.fx");
+    write_text(timed, constant_effect("uniform float Seconds : TIME;", "c = vec4(fract(Seconds), 0.0, 0.0, 1.0);"));
+    render::EffectSession session(timed, load_options(), {});
+    CHECK(session.animated(session.technique()));
+    render::EffectSession multipass(std::string(FXVIEW_TEST_EFFECTS) + "/valid/multipass.fx", load_options(), {});
+    bool any = false;
+    for (const auto& t : multipass.effect().techniques) any = any || multipass.renders_to_textures(t.name);
+    CHECK(any);
+}

@@ -65,6 +65,34 @@ void EffectSession::select_technique(const std::string& name) {
     technique_ = name;
 }
 
+std::set<std::string> EffectSession::parameters_read(const std::string& technique) const {
+    std::set<std::string> read;
+    const auto found = loaded_->techniques.find(technique);
+    if (found == loaded_->techniques.end()) return read;
+    for (const auto& pass : found->second.passes)
+        for (const auto& uniform : pass.uniforms) read.insert(uniform.parameter->name);
+    return read;
+}
+
+bool EffectSession::animated(const std::string& technique) const {
+    const auto found = loaded_->techniques.find(technique);
+    if (found == loaded_->techniques.end()) return false;
+    for (const auto& pass : found->second.passes)
+        for (const auto& uniform : pass.uniforms) {
+            const std::string semantic = to_lower(uniform.parameter->semantic);
+            if (semantic == "time" || semantic == "frame") return true;
+        }
+    return false;
+}
+
+bool EffectSession::renders_to_textures(const std::string& technique) const {
+    const auto found = loaded_->techniques.find(technique);
+    if (found == loaded_->techniques.end()) return false;
+    for (const auto& pass : found->second.passes)
+        if (!pass.pass->states.render_targets.empty()) return true;
+    return false;
+}
+
 void EffectSession::reload_textures() {
     loaded_->resources = std::make_unique<EffectResources>(*loaded_->effect, values_, texture_dirs_);
     renderer_.reset();

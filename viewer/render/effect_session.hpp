@@ -5,6 +5,7 @@
 #pragma once
 #include <filesystem>
 #include <map>
+#include <set>
 #include <memory>
 #include <optional>
 #include <string>
@@ -38,6 +39,14 @@ public:
 
     void render(const scene::Scene& scene, const gl::RenderTarget& target, FrameTiming timing = {}, bool clear_target = true);
     const EffectResources& resources() const { return *loaded_->resources; }
+    // The parameters the technique's passes read: their programs' active uniforms (what the
+    // compiler kept), for the parameter panel. Empty for an unknown technique.
+    std::set<std::string> parameters_read(const std::string& technique) const;
+    // Whether the technique's picture changes with time alone (a TIME or FRAME semantic is read).
+    bool animated(const std::string& technique) const;
+    // Whether it renders into textures of its own first (later passes may read neighbouring pixels:
+    // it cannot be drawn strip by strip).
+    bool renders_to_textures(const std::string& technique) const;
 
 private:
     struct Loaded {

@@ -12,6 +12,8 @@ app::CommandRunner add_view_command(CLI::App& app) {
         std::string window = "1280x800";
         std::string render_size;
         int frames = 0;
+        float ui_scale = 0;
+        bool stats = false;
         std::string screenshot, render_screenshot, script;
     };
     auto o = std::make_shared<Options>();
@@ -23,6 +25,9 @@ app::CommandRunner add_view_command(CLI::App& app) {
     command->add_option("--screenshot", o->screenshot, "With --frames: save the whole window (UI included) at exit");
     command->add_option("--render-screenshot", o->render_screenshot, "With --frames: save the render view at exit");
     command->add_option("--script", o->script, "Play UI actions from a file (docs/viewer.md)");
+    command->add_option("--ui-scale", o->ui_scale, "Size of the UI (fonts, widgets); default: the monitor's content scale")
+        ->check(CLI::Range(0.5f, 4.0f));
+    command->add_flag("--stats", o->stats, "At exit, print the UI's frame times and the render times they carried (for benchmarks)");
     return [o, command] {
         // Every render option the viewer shares with `render` takes effect (issue #13); --backend
         // cannot: the viewer is a window.
@@ -54,6 +59,8 @@ app::CommandRunner add_view_command(CLI::App& app) {
         options.samples = request.samples;
         if (given("--debug-view")) options.debug_view = o->scene.debug_view;
         options.frames = o->frames;
+        options.ui_scale = o->ui_scale;
+        options.stats = o->stats;
         options.screenshot = o->screenshot;
         options.render_screenshot = o->render_screenshot;
         if ((!o->screenshot.empty() || !o->render_screenshot.empty()) && o->frames == 0)

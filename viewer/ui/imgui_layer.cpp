@@ -3,17 +3,43 @@
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <filesystem>
 
 #include "core/error.hpp"
 
 namespace fxview::ui {
 
-ImGuiLayer::ImGuiLayer(GLFWwindow* window) {
+namespace {
+
+// Latin-1, Greek (κ, λ, θ in parameter names), general punctuation, super- and subscripts, arrows,
+// mathematical operators.
+const ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x206F, 0x2070, 0x209F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+
+}  // namespace
+
+ImGuiLayer::ImGuiLayer(GLFWwindow* window, float ui_scale) {
     IMGUI_CHECKVERSION();
     context_ = ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;  // the layout is ours: no imgui.ini appearing in the user's folder
     ImGui::StyleColorsDark();
+    float content_x = 1, content_y = 1;
+    glfwGetWindowContentScale(window, &content_x, &content_y);
+    scale_ = ui_scale > 0 ? ui_scale : std::clamp(std::max(content_x, content_y), 0.5f, 4.0f);
+    ImGui::GetStyle().ScaleAllSizes(scale_);
+    std::error_code missing;
+    if (std::filesystem::is_regular_file(FXVIEW_UI_FONT, missing) && io.Fonts->AddFontFromFileTTF(FXVIEW_UI_FONT, 15.0f * scale_, nullptr, kGlyphRanges)) {
+        font_fallback_ = false;
+    } else {
+        ImFontConfig config;
+        config.SizePixels = 13.0f * scale_;
+        io.Fonts->AddFontDefault(&config);
+        font_fallback_ = true;
+    }
     if (!ImGui_ImplGlfw_InitForOpenGL(window, true) || !ImGui_ImplOpenGL3_Init("#version 450 core")) {
         ImGui::DestroyContext(context_);
         throw Error("viewer: cannot initialise Dear ImGui");

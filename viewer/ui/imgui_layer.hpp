@@ -9,7 +9,10 @@ namespace fxview::ui {
 
 class ImGuiLayer {
 public:
-    explicit ImGuiLayer(GLFWwindow* window);
+    // `ui_scale` 0: the monitor's content scale (glfwGetWindowContentScale); else that factor. The
+    // font is DejaVu Sans (Latin, Greek, arrows, mathematical operators) when it is installed, else
+    // ImGui's built-in ASCII font (font_fallback() says so).
+    explicit ImGuiLayer(GLFWwindow* window, float ui_scale = 0);
     ~ImGuiLayer();
     ImGuiLayer(const ImGuiLayer&) = delete;
     ImGuiLayer& operator=(const ImGuiLayer&) = delete;
@@ -17,8 +20,13 @@ public:
     void begin_frame();
     void end_frame();  // renders the UI into the current framebuffer
 
+    float scale() const { return scale_; }
+    bool font_fallback() const { return font_fallback_; }
+
 private:
     ImGuiContext* context_ = nullptr;
+    float scale_ = 1;
+    bool font_fallback_ = false;
 };
 
 }  // namespace fxview::ui

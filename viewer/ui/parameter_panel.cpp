@@ -3,10 +3,14 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "core/text.hpp"
+#include "image/color_encoding.hpp"
 #include "effect/parser.hpp"
 
 namespace fxview::ui {
@@ -18,6 +22,32 @@ bool is_colour(const effect::Parameter& p) {
     const std::string name = to_lower(p.name);
     return widget.empty() && (p.type == "vec3" || p.type == "vec4") &&
            (name.find("color") != std::string::npos || name.find("colour") != std::string::npos);
+}
+
+// One convention for colours in the UI and on the command line (docs/viewer.md): the numbers are
+// linear (as `--set X=r,g,b`), the swatch, its picker and hex code are sRGB-encoded (as
+// `--set X=#rrggbb`). A colour above 1 (where UIMax allows it) is shown as a colour times an
+// intensity: the swatch holds the colour scaled to a peak of 1.
+bool draw_colour(const effect::Parameter& p, const std::string& label, std::vector<float>& f) {
+    const float peak = std::max({1.0f, f[0], f[1], f[2]});
+    float encoded[4] = {image::srgb_encode(f[0] / peak), image::srgb_encode(f[1] / peak), image::srgb_encode(f[2] / peak), f.size() > 3 ? f[3] : 1.0f};
+    const ImGuiColorEditFlags flags = ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_NoLabel | ImGuiColorEditFlags_Uint8;
+    bool changed = f.size() > 3 ? ImGui::ColorEdit4("##swatch", encoded, flags | ImGuiColorEditFlags_AlphaPreviewHalf) : ImGui::ColorEdit3("##swatch", encoded, flags);
+    if (changed) {
+        for (int c = 0; c < 3; ++c) f[static_cast<size_t>(c)] = image::srgb_decode(encoded[c]) * peak;
+        if (f.size() > 3) f[3] = encoded[3];
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("sRGB #%02X%02X%02X x %.3g (as --set %s=#hex); the numbers are linear", static_cast<int>(std::lround(encoded[0] * 255)),
+                          static_cast<int>(std::lround(encoded[1] * 255)), static_cast<int>(std::lround(encoded[2] * 255)), peak, p.name.c_str());
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    const float high = p.ui.max ? static_cast<float>(*p.ui.max) : 1.0f;
+    const float low = p.ui.min ? static_cast<float>(*p.ui.min) : 0.0f;
+    const float speed = p.ui.step ? static_cast<float>(*p.ui.step) : 0.005f;
+    ImGui::SetNextItemWidth(std::max(ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - ImGui::GetStyle().ItemInnerSpacing.x, 40.0f));
+    changed = ImGui::DragScalarN(label.c_str(), ImGuiDataType_Float, f.data(), static_cast<int>(f.size()), speed, &low, &high, "%.4g",
+                                 ImGuiSliderFlags_AlwaysClamp) || changed;
+    return changed;
 }
 
 bool draw_value(const effect::Parameter& p, std::vector<double>& value) {
@@ -59,9 +89,9 @@ bool draw_value(const effect::Parameter& p, std::vector<double>& value) {
         ImGui::TextDisabled("%s: %s", p.name.c_str(), p.type.c_str());
         return false;
     }
-    if (is_colour(p) && n == 3) changed = ImGui::ColorEdit3(label.c_str(), f.data(), ImGuiColorEditFlags_Float);
-    else if (is_colour(p) && n == 4) changed = ImGui::ColorEdit4(label.c_str(), f.data(), ImGuiColorEditFlags_Float);
-    else if (n == 1 && p.ui.min && p.ui.max && to_lower(p.ui.widget) != "drag")
+    if (is_colour(p) && (n == 3 || n == 4)) {
+        changed = draw_colour(p, label, f);
+    } else if (n == 1 && p.ui.min && p.ui.max && to_lower(p.ui.widget) != "drag")
         changed = ImGui::SliderFloat(label.c_str(), f.data(), static_cast<float>(*p.ui.min), static_cast<float>(*p.ui.max), "%.4g");
     else {
         const float low = p.ui.min ? static_cast<float>(*p.ui.min) : 0.0f, high = p.ui.max ? static_cast<float>(*p.ui.max) : 0.0f;
@@ -72,53 +102,111 @@ bool draw_value(const effect::Parameter& p, std::vector<double>& value) {
     return changed;
 }
 
+std::string label_of(const effect::Parameter& p) {
+    return (p.ui.label.empty() ? p.name : p.ui.label) + (p.ui.unit.empty() ? "" : " [" + p.ui.unit + "]");
+}
+
+// Parameters a plugin of the effect names in its annotations (its inputs and targets): they matter
+// even when no shader reads them (a film-fit plugin's target colour).
+std::set<std::string> named_by_plugins(const effect::Effect& effect) {
+    std::set<std::string> named;
+    for (const auto& plugin : effect.plugins)
+        for (const auto& annotation : plugin.annotations) {
+            if (!annotation.value.is_string) continue;
+            std::stringstream in(annotation.value.text);
+            for (std::string part; std::getline(in, part, ',');) {
+                const size_t first = part.find_first_not_of(" \t"), last = part.find_last_not_of(" \t");
+                if (first != std::string::npos && effect.find_parameter(part.substr(first, last - first + 1)))
+                    named.insert(part.substr(first, last - first + 1));
+            }
+        }
+    return named;
+}
+
+// Draws one parameter row (reset button and widget); true when its value changed.
+bool draw_row(const effect::Effect& effect, effect::ParameterValues& values, const effect::Parameter& p) {
+    bool changed = false;
+    auto& value = values.numbers[p.name];
+    ImGui::PushID(p.name.c_str());
+    if (ImGui::SmallButton("R")) {
+        value = effect::default_values(effect).numbers.at(p.name);  // computed only when asked for
+        changed = true;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Reset %s to its default", p.name.c_str());
+    ImGui::SameLine();
+    const int count = std::max(1, p.array_size), components = effect::component_count(p.type);
+    for (int element = 0; element < count; ++element) {
+        std::vector<double> part(value.begin() + element * components, value.begin() + (element + 1) * components);
+        ImGui::PushID(element);
+        if (draw_value(p, part)) {
+            std::copy(part.begin(), part.end(), value.begin() + element * components);
+            effect::enforce_constraints(effect, values, p.name);  // e.g. Upper never below Lower
+            changed = true;
+        }
+        ImGui::PopID();
+    }
+    if (ImGui::IsItemHovered()) {
+        // The whole label and the help: a narrow panel may have clipped the label.
+        if (p.ui.help.empty()) ImGui::SetTooltip("%s (%s)", label_of(p).c_str(), p.name.c_str());
+        else ImGui::SetTooltip("%s (%s)\n%s", label_of(p).c_str(), p.name.c_str(), p.ui.help.c_str());
+    }
+    ImGui::PopID();
+    return changed;
+}
+
+// Rows grouped by UIGroup (collapsible headers), in UIOrder; `id` keeps the headers of two lists apart.
+bool draw_groups(const effect::Effect& effect, effect::ParameterValues& values, const std::vector<const effect::Parameter*>& rows,
+                 const char* id) {
+    bool changed = false;
+    std::string group = "\x01";
+    bool open = true;
+    // Widgets leave room for the longest label (up to 60 % of the panel), so labels are not cut.
+    float label_width = 0;
+    for (const effect::Parameter* p : rows) label_width = std::max(label_width, ImGui::CalcTextSize(label_of(*p).c_str()).x);
+    const float available = ImGui::GetContentRegionAvail().x;
+    const float item_width = std::max(available * 0.4f, available - label_width - ImGui::GetFrameHeight() - 3 * ImGui::GetStyle().ItemSpacing.x);
+    ImGui::PushItemWidth(item_width);
+    for (const effect::Parameter* p : rows) {
+        if (p->ui.group != group) {
+            group = p->ui.group;
+            const std::string header = (group.empty() ? std::string("Parameters") : group) + "##" + id;
+            open = ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen);
+        }
+        if (open) changed = draw_row(effect, values, *p) || changed;
+    }
+    ImGui::PopItemWidth();
+    return changed;
+}
+
 }  // namespace
 
-bool draw_parameter_panel(render::EffectSession& session) {
+bool draw_parameter_panel(render::EffectSession& session, const std::vector<std::string>& techniques) {
     const effect::Effect& effect = session.effect();
     effect::ParameterValues& values = session.values();
-    // Defaults are computed only when a reset asks for them, not every frame.
-    const auto default_of = [&effect](const std::string& name) { return effect::default_values(effect).numbers.at(name); };
-    std::vector<const effect::Parameter*> shown;
+    std::set<std::string> read = named_by_plugins(effect);
+    for (const std::string& technique : techniques) read.merge(session.parameters_read(technique));
+    std::vector<const effect::Parameter*> used, unused;
     for (const auto& p : effect.parameters)
-        if (p.semantic.empty() && !effect::is_sampler_type(p.type)) shown.push_back(&p);
-    std::stable_sort(shown.begin(), shown.end(), [](const auto* a, const auto* b) {
-        return a->ui.group != b->ui.group ? a->ui.group < b->ui.group : a->ui.order < b->ui.order;
-    });
+        if (p.semantic.empty() && !effect::is_sampler_type(p.type)) (read.count(p.name) ? used : unused).push_back(&p);
+    const auto by_group = [](const auto* a, const auto* b) { return a->ui.group != b->ui.group ? a->ui.group < b->ui.group : a->ui.order < b->ui.order; };
+    std::stable_sort(used.begin(), used.end(), by_group);
+    std::stable_sort(unused.begin(), unused.end(), by_group);
     bool changed = false;
     if (ImGui::Button("Reset all")) {
         values.numbers = effect::default_values(effect).numbers;
         changed = true;
     }
-    std::string group = "\x01";
-    bool open = true;
-    for (const effect::Parameter* p : shown) {
-        if (p->ui.group != group) {
-            group = p->ui.group;
-            open = ImGui::CollapsingHeader(group.empty() ? "Parameters" : group.c_str(), ImGuiTreeNodeFlags_DefaultOpen);
+    changed = draw_groups(effect, values, used, "used") || changed;
+    if (!unused.empty()) {
+        ImGui::Spacing();
+        std::string names;
+        for (size_t i = 0; i < techniques.size(); ++i) names += (i ? ", " : "") + techniques[i];
+        const std::string header = "Not read by " + names + " (" + std::to_string(unused.size()) + ")##unused";
+        if (ImGui::CollapsingHeader(header.c_str())) {
+            ImGui::Indent();
+            changed = draw_groups(effect, values, unused, "unused") || changed;
+            ImGui::Unindent();
         }
-        if (!open) continue;
-        auto& value = values.numbers[p->name];
-        ImGui::PushID(p->name.c_str());
-        if (ImGui::SmallButton("R")) {
-            value = default_of(p->name);
-            changed = true;
-        }
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Reset %s to its default", p->name.c_str());
-        ImGui::SameLine();
-        const int count = std::max(1, p->array_size), components = effect::component_count(p->type);
-        for (int element = 0; element < count; ++element) {
-            std::vector<double> part(value.begin() + element * components, value.begin() + (element + 1) * components);
-            ImGui::PushID(element);
-            if (draw_value(*p, part)) {
-                std::copy(part.begin(), part.end(), value.begin() + element * components);
-                effect::enforce_constraints(effect, values, p->name);  // e.g. Upper never below Lower
-                changed = true;
-            }
-            ImGui::PopID();
-        }
-        if (!p->ui.help.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", p->ui.help.c_str());
-        ImGui::PopID();
     }
     bool any_sampler = false;
     for (const auto& p : effect.parameters)

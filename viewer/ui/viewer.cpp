@@ -26,6 +26,7 @@
 #include "scene/shapes.hpp"
 #include "ui/display_pass.hpp"
 #include "ui/imgui_layer.hpp"
+#include "ui/render_schedule.hpp"
 #include "ui/plugin_panel.hpp"
 #include "ui/parameter_panel.hpp"
 
@@ -107,7 +108,7 @@ public:
         context_ = context::create_context(context_options);
         window_ = context_->window();
         glfwSwapInterval(vsync_ ? 1 : 0);
-        imgui_ = std::make_unique<ImGuiLayer>(window_);
+        imgui_ = std::make_unique<ImGuiLayer>(window_, options.ui_scale);
         display_ = std::make_unique<DisplayPass>();
         debug_ = std::make_unique<render::DebugRenderer>();
         skybox_ = std::make_unique<render::Skybox>();
@@ -120,7 +121,6 @@ public:
         if (!options.debug_view.empty())
             for (auto& o : objects_) o.view = parse_view(options.debug_view);
         samples_ = options.samples;
-        for (int i = 0; i < 2; ++i) timer_queries_[i] = gl::create_query(GL_TIME_ELAPSED);
         script_ = options.script;
     }
 
@@ -146,9 +146,29 @@ public:
             if (target_) run_script_step();  // actions need the render view, made by the first frame
             frame();
             ++frame_number_;
-            if (options_.frames > 0 && frame_number_ >= options_.frames && script_position_ >= script_.size()) break;
+            ui_frame_seconds_.push_back(frame_seconds_);
+            if (options_.frames > 0 && frame_number_ >= options_.frames && script_position_ >= script_.size() && picture_done()) break;
         }
+        if (options_.stats) print_stats();
         return exit_code_;
+    }
+
+    // `view --stats`: the UI's frame times and the rendering they carried (docs/benchmarks.md).
+    void print_stats() const {
+        const auto summary = [](std::vector<double> v, const char* what) {
+            if (v.empty()) return std::string(what) + ": none";
+            std::sort(v.begin(), v.end());
+            double sum = 0;
+            for (const double x : v) sum += x;
+            char text[200];
+            std::snprintf(text, sizeof text, "%s: %zu, mean %.1f ms, median %.1f ms, 95th percentile %.1f ms, max %.1f ms", what, v.size(),
+                          1e3 * sum / v.size(), 1e3 * v[v.size() / 2], 1e3 * v[std::min(v.size() - 1, v.size() * 95 / 100)], 1e3 * v.back());
+            return std::string(text);
+        };
+        // The first frame carries the window's and the effect's start-up: left out.
+        const std::vector<double> frames(ui_frame_seconds_.begin() + std::min<size_t>(1, ui_frame_seconds_.size()), ui_frame_seconds_.end());
+        std::printf("%s\n%s\npictures completed: %d, the last took %.1f ms to render\n", summary(frames, "UI frames").c_str(),
+                    summary(render_seconds_, "frames that rendered").c_str(), schedule_.pictures(), 1e3 * schedule_.last_picture_seconds());
     }
 
 private:
@@ -270,6 +290,71 @@ private:
         return views;
     }
 
+    // A hash of everything the picture depends on: scene, objects and their views, effect (a reload
+    // makes a new one), parameter values, display settings and size.
+    std::uint64_t render_key(int width, int height) const {
+        StateHash h;
+        h.add(width).add(height).add(samples_).add(srgb_display_).add(scene_.camera.pose.distance);
+        h.add_bytes(&scene_.camera.pose, sizeof scene_.camera.pose).add(scene_.camera.fov_y_degrees).add(scene_.camera.near_plane).add(scene_.camera.far_plane);
+        h.add_bytes(&scene_.light.pose, sizeof scene_.light.pose).add_bytes(&scene_.light.color, sizeof scene_.light.color).add(scene_.light.intensity);
+        h.add_bytes(&scene_.background, sizeof scene_.background).add(skybox_name_);
+        for (const auto& o : objects_) {
+            h.add(o.object.mesh).add_bytes(&o.object.pose, sizeof o.object.pose).add_bytes(&o.object.scale, sizeof o.object.scale);
+            h.add(o.technique).add(static_cast<int>(o.view));
+        }
+        if (session_) {
+            h.add(reinterpret_cast<std::uintptr_t>(&session_->effect())).add(reinterpret_cast<std::uintptr_t>(&session_->resources()));
+            h.add(session_->technique());
+            for (const auto& [name, value] : session_->values().numbers) {
+                h.add(name);
+                for (const double x : value) h.add(x);
+            }
+            for (const auto& [name, file] : session_->values().textures) h.add(name).add(file);
+        }
+        return h.value();
+    }
+
+    // Where the objects are, per row, for the render schedule's cost model: a cheap render at a
+    // quarter of the size, redone when the geometry changes and only for pictures that are slow.
+    void update_coverage(int width, int height) {
+        if (schedule_.pictures() > 0 && schedule_.last_picture_seconds() < 0.05) return;
+        StateHash h;
+        h.add(width).add(height).add_bytes(&scene_.camera.pose, sizeof scene_.camera.pose).add(scene_.camera.fov_y_degrees);
+        for (const auto& o : objects_) h.add(o.object.mesh).add_bytes(&o.object.pose, sizeof o.object.pose).add_bytes(&o.object.scale, sizeof o.object.scale);
+        if (h.value() == coverage_key_) return;
+        coverage_key_ = h.value();
+        const int w = std::max(1, width / 4), ht = std::max(1, height / 4);
+        gl::RenderTarget small({w, ht, 1, 0});
+        scene::Scene scene = scene_;
+        scene.background = glm::vec4(0.0f);
+        scene.objects.clear();
+        for (const auto& o : objects_) scene.objects.push_back(o.object);
+        debug_->render(scene, render::DebugView::Normals, small, true);
+        const image::FloatImage image = small.read_color(0);  // top row first
+        std::vector<double> rows(static_cast<size_t>(height), 0.0);
+        for (int y = 0; y < height; ++y) {
+            const int source = std::min(ht - 1, y * ht / height);
+            double count = 0;
+            for (int x = 0; x < w; ++x) count += image.data[(static_cast<size_t>(source) * w + x) * 4 + 3] > 0 ? 1.0 : 0.0;
+            rows[static_cast<size_t>(y)] = count * width / w;
+        }
+        schedule_.set_coverage(std::move(rows));
+    }
+
+    bool picture_animated() const {
+        if (!session_) return false;
+        for (const auto& o : objects_)
+            if (o.view == ViewMode::Effect && session_->animated(o.technique.empty() ? session_->technique() : o.technique)) return true;
+        return false;
+    }
+
+    bool picture_progressive() const {
+        if (!session_) return true;
+        for (const auto& o : objects_)
+            if (o.view == ViewMode::Effect && session_->renders_to_textures(o.technique.empty() ? session_->technique() : o.technique)) return false;
+        return true;
+    }
+
     void frame() {
         int window_width = 0, window_height = 0;
         glfwGetFramebufferSize(window_, &window_width, &window_height);
@@ -278,18 +363,26 @@ private:
         if (!target_ || target_->width() != width || target_->height() != height || target_->multisampled() != (samples_ > 1))
             target_ = std::make_unique<gl::RenderTarget>(gl::RenderTargetDesc{width, height, 1, samples_});
         if (!paused_) {
-            const int query = frame_number_ % 2;
-            glBeginQuery(GL_TIME_ELAPSED, timer_queries_[query].get());
-            render_scene(*target_);
-            glEndQuery(GL_TIME_ELAPSED);
-            GLint available = 0;
-            glGetQueryObjectiv(timer_queries_[1 - query].get(), GL_QUERY_RESULT_AVAILABLE, &available);
-            if (available && frame_number_ > 0) {
-                GLuint64 nanoseconds = 0;
-                glGetQueryObjectui64v(timer_queries_[1 - query].get(), GL_QUERY_RESULT, &nanoseconds);
-                gpu_ms_ = nanoseconds / 1e6;
+            // Render only what changed: nothing while the picture is current, strips across UI frames
+            // while a slow picture refines (render_schedule.hpp).
+            schedule_.update(render_key(width, height), picture_animated(), picture_progressive());
+            update_coverage(width, height);
+            const RenderSchedule::Work work = schedule_.next(width, height);
+            if (work.height > 0) {
+                const auto start = std::chrono::steady_clock::now();
+                const bool piece = work.width < width || work.height < height;
+                if (piece) {  // y counts from the top of the picture, GL's from the bottom
+                    glEnable(GL_SCISSOR_TEST);
+                    glScissor(work.x, height - work.y - work.height, work.width, work.height);
+                }
+                render_scene(*target_);  // clears and resolves inside the scissor only
+                glDisable(GL_SCISSOR_TEST);
+                glFinish();  // the strip's cost, for the next strip's size
+                const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                schedule_.done(work, seconds);
+                render_seconds_.push_back(seconds);
+                display_->run(target_->color_texture(0), width, height, srgb_display_);
             }
-            display_->run(target_->color_texture(0), width, height, srgb_display_);
         }
         imgui_->begin_frame();
         draw_ui(window_width, window_height);
@@ -302,7 +395,7 @@ private:
         imgui_->end_frame();
         for (const auto& path : pending_window_shots_) write_window_png(path, window_width, window_height);
         pending_window_shots_.clear();
-        const bool last = options_.frames > 0 && frame_number_ + 1 >= options_.frames && script_position_ >= script_.size();
+        const bool last = options_.frames > 0 && frame_number_ + 1 >= options_.frames && script_position_ >= script_.size() && picture_done();
         if (last && !options_.screenshot.empty()) write_window_png(options_.screenshot, window_width, window_height);
         if (last && !options_.render_screenshot.empty()) write_render(options_.render_screenshot);
         context_->swap_buffers();
@@ -470,12 +563,26 @@ private:
     }
 
     void draw_ui(int window_width, int window_height) {
-        const float panel_width = std::min(420.0f, window_width * 0.4f);
+        // The panel is as wide as the user drags its right edge (labels need room), the full height.
+        const float height = static_cast<float>(window_height), scale = imgui_->scale();
         ImGui::SetNextWindowPos(ImVec2(0, 0));
-        ImGui::SetNextWindowSize(ImVec2(panel_width, static_cast<float>(window_height)));
-        ImGui::Begin("fxview", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-        ImGui::Text("%.1f FPS  frame %.2f ms  GPU %.2f ms%s", frame_seconds_ > 0 ? 1.0 / frame_seconds_ : 0.0,
-                    frame_seconds_ * 1e3, gpu_ms_, paused_ ? "  (paused)" : "");
+        ImGui::SetNextWindowSize(ImVec2(std::min(460.0f * scale, window_width * 0.45f), height), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSizeConstraints(ImVec2(std::min(240.0f * scale, window_width * 0.5f), height),
+                                            ImVec2(std::max(240.0f * scale, window_width * 0.8f), height));
+        ImGui::Begin("fxview", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+        const float panel_width = ImGui::GetWindowWidth();
+        ImGui::Text("%.1f FPS  frame %.1f ms  picture %.1f ms%s", frame_seconds_ > 0 ? 1.0 / frame_seconds_ : 0.0, frame_seconds_ * 1e3,
+                    schedule_.last_picture_seconds() * 1e3, paused_ ? "  (paused)" : "");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("frame: the UI's frame time; picture: what the last complete picture took to render (the view is "
+                              "drawn only when something changed, slow pictures in strips across frames)");
+        if (schedule_.refining()) {
+            char text[64];
+            std::snprintf(text, sizeof text, "refining %.0f %%", schedule_.progress() * 100);
+            ImGui::ProgressBar(static_cast<float>(schedule_.progress()), ImVec2(-1, 0), text);
+        }
+        if (imgui_->font_fallback())
+            ImGui::TextDisabled("UI font %s missing (fonts-dejavu-core): Greek letters show as '?'", FXVIEW_UI_FONT);
         if (ImGui::BeginTabBar("tabs")) {
             if (ImGui::BeginTabItem("Effect", nullptr, tab_flags("Effect"))) {
                 draw_effect_tab();
@@ -609,7 +716,13 @@ private:
         }
         draw_file_access();
         ImGui::Separator();
-        draw_parameter_panel(*session_);
+        std::vector<std::string> shown;  // the techniques on screen
+        for (const auto& o : objects_) {
+            const std::string& t = o.technique.empty() ? session_->technique() : o.technique;
+            if (o.view == ViewMode::Effect && std::find(shown.begin(), shown.end(), t) == shown.end()) shown.push_back(t);
+        }
+        if (shown.empty()) shown.push_back(session_->technique());
+        draw_parameter_panel(*session_, shown);
     }
 
     void draw_scene_tab() {
@@ -796,7 +909,11 @@ private:
     }
 
     // --- scripts ---------------------------------------------------------------------------
+    // The picture on screen is the current one (a refining picture is finished first).
+    bool picture_done() const { return paused_ || !schedule_.pending(); }
+
     void run_script_step() {
+        if (!picture_done()) return;  // actions see the picture their predecessors asked for
         if (wait_frames_ > 0) {
             --wait_frames_;
             return;
@@ -932,7 +1049,9 @@ private:
     std::map<GLuint, std::array<gl::Texture, 6>> cube_views_;
     std::unique_ptr<render::EffectSession> session_;
     std::unique_ptr<gl::RenderTarget> target_;
-    gl::Query timer_queries_[2];
+    RenderSchedule schedule_;
+    std::uint64_t coverage_key_ = 0;
+    std::vector<double> render_seconds_, ui_frame_seconds_;  // per UI frame: rendering (when any) and the whole frame
     scene::Scene scene_, initial_scene_;
     std::vector<ObjectState> objects_;
     std::string effect_path_, reload_error_, status_;
@@ -943,7 +1062,7 @@ private:
     glm::ivec2 view_size_{640, 480}, windowed_pos_{0}, windowed_size_{1280, 800}, shot_size_{1920, 1080};
     bool paused_ = false, vsync_ = true, srgb_display_ = true, show_help_ = false, transparent_shots_ = false;
     int samples_ = 0, sampler_choice_ = 0, frame_number_ = 0, exit_code_ = 0;
-    double frame_seconds_ = 0, gpu_ms_ = 0;
+    double frame_seconds_ = 0;
     Pick pick_;
     PluginPanel plugin_panel_;
     int plugin_start_frame_ = 0;  // plugin-start: frames drawn while the plugin runs

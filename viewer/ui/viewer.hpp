@@ -32,6 +32,8 @@ struct ViewerOptions {
     bool gl_debug = false;
     int samples = 0;         // MSAA of the render view: 0, 2, 4 or 8
     std::string debug_view;  // normals, uv, camera or light: every object starts in that debug view
+    float ui_scale = 0;      // 0: the monitor's content scale
+    bool stats = false;      // print UI frame and render times at exit
 };
 
 // Runs until the window closes (or the frame count is reached); returns the exit code.

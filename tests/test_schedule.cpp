@@ -1,0 +1,98 @@
+// The viewer's render schedule (viewer/ui/render_schedule.hpp) with a simulated renderer: what it
+// asks to draw, not how long a real GPU takes (no timed assertions).
+#include <doctest/doctest.h>
+
+#include <vector>
+
+#include "ui/render_schedule.hpp"
+
+using namespace fxview;
+
+namespace {
+
+// A picture whose rows 40..79 are covered by an object costing `per_pixel` seconds per covered
+// pixel, plus `fixed` per piece; runs the schedule until the picture is complete and checks that
+// the pieces cover every pixel exactly once.
+struct Simulation {
+    int width = 200, height = 120;
+    double per_pixel = 2e-5, fixed = 1e-3;
+    std::vector<double> coverage = std::vector<double>(120, 0.0);
+    std::vector<double> piece_seconds;
+
+    Simulation() {
+        for (int y = 40; y < 80; ++y) coverage[static_cast<size_t>(y)] = 150;
+    }
+
+    double cost(const ui::RenderSchedule::Work& w) const {
+        double pixels = 0;
+        for (int y = w.y; y < w.y + w.height; ++y) pixels += coverage[static_cast<size_t>(y)] * w.width / width;
+        return fixed + per_pixel * pixels;
+    }
+
+    void run(ui::RenderSchedule& schedule, std::uint64_t key) {
+        std::vector<int> drawn(static_cast<size_t>(width * height), 0);
+        schedule.set_coverage(coverage);
+        for (int frame = 0; frame < 100000 && (schedule.update(key, false, true), schedule.pending()); ++frame) {
+            const ui::RenderSchedule::Work w = schedule.next(width, height);
+            REQUIRE(w.height > 0);
+            for (int y = w.y; y < w.y + w.height; ++y)
+                for (int x = w.x; x < w.x + w.width; ++x) ++drawn[static_cast<size_t>(y * width + x)];
+            piece_seconds.push_back(cost(w));
+            schedule.done(w, piece_seconds.back());
+        }
+        for (const int count : drawn) CHECK(count == 1);
+    }
+};
+
+}  // namespace
+
+TEST_CASE("a slow picture is drawn in pieces that tile it once, each near the budget, the costly rows in column tiles") {
+    Simulation s;
+    ui::RenderSchedule schedule(0.01);
+    s.run(schedule, 1);
+    CHECK(!schedule.pending());
+    CHECK(schedule.pictures() == 1);
+    // One covered row costs 1 ms + 3 ms: whole rows; the budget of 10 ms allows ~3 such rows. The
+    // first piece is a probe; after it every piece stays within 1.5x the budget (the model adapts
+    // to the measured costs, the first covered row may overshoot a little).
+    CHECK(s.piece_seconds.size() > 10);
+    for (size_t i = 1; i < s.piece_seconds.size(); ++i) CHECK(s.piece_seconds[i] <= 0.015);
+
+    // An object so costly that one row exceeds the budget: rows are split into column tiles.
+    Simulation heavy;
+    heavy.per_pixel = 5e-4;  // 75 ms per covered row
+    ui::RenderSchedule tiles(0.01);
+    heavy.run(tiles, 1);
+    CHECK(tiles.pictures() == 1);
+    size_t over = 0;
+    for (size_t i = 1; i < heavy.piece_seconds.size(); ++i) over += heavy.piece_seconds[i] > 0.02;
+    CHECK(over <= 2);  // the model's first measurements of the object
+}
+
+TEST_CASE("nothing is drawn while the state is unchanged; a new state or an animated effect starts a new picture") {
+    ui::RenderSchedule schedule(1.0);  // everything fits: one piece per picture
+    schedule.update(7, false, true);
+    ui::RenderSchedule::Work w = schedule.next(64, 64);
+    CHECK(w.height > 0);
+    while (schedule.pending()) {
+        schedule.done(w, 0.001);
+        if (schedule.pending()) w = schedule.next(64, 64);
+    }
+    schedule.update(7, false, true);
+    CHECK(schedule.next(64, 64).height == 0);  // current: nothing to draw
+    schedule.update(8, false, true);
+    CHECK(schedule.pending());  // changed state
+    w = schedule.next(64, 64);
+    while (schedule.pending()) {
+        schedule.done(w, 0.001);
+        if (schedule.pending()) w = schedule.next(64, 64);
+    }
+    schedule.update(8, true, true);
+    CHECK(schedule.pending());  // animated: a new picture once the last is complete
+    schedule.update(8, false, false);
+    const ui::RenderSchedule::Work whole = schedule.next(64, 64);
+    CHECK(whole.width == 64);  // not progressive: the whole picture at once
+    CHECK(whole.height == 64);
+    schedule.next(32, 64);
+    CHECK(schedule.pending());  // a new size starts over
+}
