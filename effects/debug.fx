@@ -49,7 +49,7 @@ GLSLShader PlainFS {
     }
 }
 
-technique Normals < string UIHelp = "World-space normal, eq. 55"; > {
+technique Normals < string UIHelp = "World-space normal as colour"; > {
     pass p0 { VertexShader = StandardVS; FragmentShader = NormalsFS; CullFaceEnable = false; }
 }
 technique TexCoords {

@@ -11,7 +11,7 @@ uniform float LightIrradiance < string UIName = "Light irradiance E"; float UIMi
                                 string UIHelp = "Irradiance the point light delivers at normal incidence (no distance fall-off)"; > = 3.0;
 
 uniform vec3 BaseColor < string UIName = "Base colour"; string UIWidget = "color"; string UIGroup = "PBR";
-                         string UIHelp = "Linear F0 of metals (seed 004: gold 1.00/0.71/0.29, copper 0.95/0.64/0.54), albedo of non-metals; also Lambert's albedo"; > = {1.0, 0.71, 0.29};
+                         string UIHelp = "Linear F0 of metals (gold 1.00/0.71/0.29, copper 0.95/0.64/0.54), albedo of non-metals; also Lambert's albedo"; > = {1.0, 0.71, 0.29};
 uniform float Metallic < string UIName = "Metallic"; float UIMin = 0; float UIMax = 1; string UIGroup = "PBR"; > = 1.0;
 uniform float Roughness < string UIName = "Roughness"; float UIMin = 0.05; float UIMax = 1; string UIGroup = "PBR";
                           string UIHelp = "GGX alpha = roughness squared; Smith-Schlick k = (roughness + 1)^2 / 8"; > = 0.4;
@@ -27,16 +27,16 @@ uniform float BeckmannM < string UIName = "Slope m"; float UIMin = 0.02; float U
                           string UIHelp = "RMS slope of the microfacets"; > = 0.3;
 uniform float Eta < string UIName = "Index of refraction"; float UIMin = 1; float UIMax = 3; float UIStep = 0.01; string UIGroup = "Cook-Torrance (Beckmann)"; > = 1.5;
 uniform bool PrintedBeckmann < string UIName = "Beckmann as printed"; string UIGroup = "Cook-Torrance (Beckmann)";
-                               string UIHelp = "Seed 001's 1/(4 m^2 cos^4) instead of the normalised 1/(pi m^2 cos^4): highlights 4/pi too bright"; > = false;
+                               string UIHelp = "The lecture notes' misprinted 1/(4 m^2 cos^4) instead of the normalised 1/(pi m^2 cos^4): highlights 4/pi too bright"; > = false;
 
 uniform vec3 ASDiffuse < string UIName = "Rd"; string UIWidget = "color"; string UIGroup = "Ashikhmin-Shirley"; > = {0.45, 0.3, 0.15};
 uniform vec3 ASSpecular < string UIName = "Rs"; string UIWidget = "color"; string UIGroup = "Ashikhmin-Shirley"; > = {0.3, 0.3, 0.3};
 uniform float Nu < string UIName = "nu (along the tangent)"; float UIMin = 1; float UIMax = 10000; string UIGroup = "Ashikhmin-Shirley"; > = 20.0;
 uniform float Nv < string UIName = "nv (across)"; float UIMin = 1; float UIMax = 10000; string UIGroup = "Ashikhmin-Shirley"; > = 500.0;
 
-uniform vec3 FitDiffuse < string UIName = "cd"; string UIWidget = "color"; string UIGroup = "Ashikhmin-Shirley fit (eq. 4.28)"; > = {0.2, 0.2, 0.2};
-uniform vec3 FitSpecular < string UIName = "cs"; string UIWidget = "color"; string UIGroup = "Ashikhmin-Shirley fit (eq. 4.28)"; > = {0.2, 0.2, 0.2};
-uniform float FitExponent < string UIName = "ns"; float UIMin = 1; float UIMax = 10000; string UIGroup = "Ashikhmin-Shirley fit (eq. 4.28)"; > = 50.0;
+uniform vec3 FitDiffuse < string UIName = "cd"; string UIWidget = "color"; string UIGroup = "Ashikhmin-Shirley, simplified (fit model)"; > = {0.2, 0.2, 0.2};
+uniform vec3 FitSpecular < string UIName = "cs"; string UIWidget = "color"; string UIGroup = "Ashikhmin-Shirley, simplified (fit model)"; > = {0.2, 0.2, 0.2};
+uniform float FitExponent < string UIName = "ns"; float UIMin = 1; float UIMax = 10000; string UIGroup = "Ashikhmin-Shirley, simplified (fit model)"; > = 50.0;
 
 uniform vec3 GGXDiffuse < string UIName = "kd"; string UIWidget = "color"; string UIGroup = "Cook-Torrance (GGX)"; > = {0.05, 0.05, 0.05};
 uniform vec3 GGXF0 < string UIName = "F0 (reflectance at normal incidence)"; string UIWidget = "color"; string UIGroup = "Cook-Torrance (GGX)"; > = {0.9, 0.6, 0.3};

@@ -17,14 +17,14 @@ uniform sampler2D Spectra < string ResourceName = "spectral:library"; string For
 uniform int Observer < string UIName = "Observer"; string UIWidget = "combo"; string UIItems = "CIE 1931 2°|CIE 1964 10°";
                        string UIGroup = "Colorimetry"; int UIOrder = 1; > = 0;
 uniform bool ByteCmf < string UIName = "8-bit CMF texture"; string UIGroup = "Colorimetry"; int UIOrder = 2;
-                       string UIHelp = "Table 2: byte storage is faster on old GPUs and loses precision"; > = false;
+                       string UIHelp = "Byte storage of the tables: faster on old GPUs, less precise"; > = false;
 uniform int Lower < string UIName = "Lower wavelength"; int UIMin = 360; int UIMax = 830; string UIUnits = "nm";
                     string UIGroup = "Integration"; int UIOrder = 1; > = 360;
 uniform int Upper < string UIName = "Upper wavelength"; int UIMin = 360; int UIMax = 830; string UIUnits = "nm"; string UIAtLeast = "Lower";
                     string UIGroup = "Integration"; int UIOrder = 2; > = 830;
 uniform int Steps < string UIName = "Steps"; int UIMin = 1; int UIMax = 50; string UIUnits = "nm";
                     string UIGroup = "Integration"; int UIOrder = 3;
-                    string UIHelp = "Wavelength step: the simplest level of detail (fig. 22)"; > = 1;
+                    string UIHelp = "Wavelength step in nm: the simplest level of detail"; > = 1;
 uniform float K < string UIName = "k"; float UIMin = 0; float UIMax = 1; float UIStep = 0.0001; string UIGroup = "Integration";
                   int UIOrder = 4; string UIHelp = "Normalisation; 0 derives k = 1 / sum(ybar) so that a constant 1 gives Y = 1"; > = 0.0;
 uniform int OutputMode < string UIName = "Out of gamut"; string UIWidget = "combo"; string UIItems = "clip|desaturate|scale";

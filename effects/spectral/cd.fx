@@ -15,14 +15,14 @@
 uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
                             string UIHelp = "Index in spectra/library.txt (5 = D65)"; > = 5;
 uniform int SubstrateSpectrum < string UIName = "Substrate spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
-                                string UIHelp = "Reflectance of the disc's coating (the thesis used gold, fig. 36b)"; > = 0;
+                                string UIHelp = "Reflectance of the disc's metal coating"; > = 0;
 uniform float SubstrateWeight < string UIName = "Substrate kd"; float UIMin = 0; float UIMax = 1; string UIGroup = "Spectra"; > = 0.15;
 uniform float Brightness < string UIName = "Brightness"; float UIMin = 0; float UIMax = 8; float UIStep = 0.1; string UIGroup = "Lighting"; > = 1.0;
 
 uniform float TrackSpacing < string UIName = "Track spacing d"; float UIMin = 300; float UIMax = 5000; string UIUnits = "nm"; string UIGroup = "Disc";
                              string UIHelp = "1600 nm: CD; 740 nm: DVD"; > = 1600.0;
-uniform float Threshold < string UIName = "Threshold"; float UIMin = 0; float UIMax = 1; string UIGroup = "Thesis (eq. 72)";
-                          string UIHelp = "Intensities below it are cut to 0 (the thesis' hard cut)"; > = 0.5;
+uniform float Threshold < string UIName = "Threshold"; float UIMin = 0; float UIMax = 1; string UIGroup = "Simple model (hard cut)";
+                          string UIHelp = "Intensities below it are cut to 0"; > = 0.5;
 uniform int Tracks < string UIName = "Illuminated tracks N"; int UIMin = 1; int UIMax = 200; string UIGroup = "Grating";
                      string UIHelp = "Tracks lit coherently (a square patch N tracks wide and as long): more tracks give narrower orders and a smaller mirror highlight. Orders narrower than a pixel are averaged over it, so they stay smooth but dim; raise Brightness to see them"; > = 60;
 

@@ -14,18 +14,18 @@ uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = 
 uniform float Brightness < string UIName = "Brightness"; float UIMin = 0; float UIMax = 8; float UIStep = 0.1; string UIGroup = "Lighting";
                            string UIHelp = "Scales the reflected light: 1 is physical (a perfect mirror under illuminant E gives Y = 1)"; > = 2.0;
 uniform int Incidence < string UIName = "Angle of incidence from"; string UIWidget = "combo"; string UIItems = "view|light"; string UIGroup = "Lighting";
-                        string UIHelp = "view: light arriving from the mirror direction of the eye (a uniform sky); light: the angle to the point light, as the thesis"; > = 0;
+                        string UIHelp = "view: light arriving from the mirror direction of the eye (a uniform sky); light: the angle to the point light, as in the original viewer"; > = 0;
 
 uniform float OuterIndex < string UIName = "Outer medium n0"; float UIMin = 1; float UIMax = 2.5; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 1; > = 1.0;
 uniform float FilmIndex < string UIName = "Film n1"; float UIMin = 1; float UIMax = 3; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 2;
-                          string UIHelp = "1.33: soap/water; 1.38: MgF2; 2.0: the thesis' fig. 26"; > = 1.33;
+                          string UIHelp = "1.33: soap/water; 1.38: MgF2 coating; 2.0: a dense oxide"; > = 1.33;
 uniform float SubstrateIndex < string UIName = "Substrate n2"; float UIMin = 1; float UIMax = 4; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 3; > = 1.5;
 uniform float SubstrateKappa < string UIName = "Substrate κ"; float UIMin = 0; float UIMax = 5; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 4;
                                string UIHelp = "Extinction coefficient of the substrate, n2 + iκ (exact models only)"; > = 0.0;
 uniform float Thickness < string UIName = "Thickness"; float UIMin = 0; float UIMax = 2000; float UIStep = 1; string UIUnits = "nm"; string UIGroup = "Film"; int UIOrder = 5;
                           string UIHelp = "Base thickness of the film (layer A in a stack)"; > = 100.0;
 uniform float Variation < string UIName = "Variation"; float UIMin = 0; float UIMax = 2000; float UIStep = 1; string UIUnits = "nm"; string UIGroup = "Film"; int UIOrder = 6;
-                          string UIHelp = "Height of the inverted paraboloid in texture coordinates added to the base (fig. 27)"; > = 300.0;
+                          string UIHelp = "Height of the inverted paraboloid, in texture coordinates, added to the base thickness"; > = 300.0;
 
 uniform int Layers < string UIName = "Layers"; int UIMin = 1; int UIMax = 16; string UIGroup = "Stack"; int UIOrder = 1;
                      string UIHelp = "Films on the substrate, alternating A (n1, varying thickness) and B from the top"; > = 4;
