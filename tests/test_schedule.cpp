@@ -1,9 +1,14 @@
-// The viewer's render schedule (viewer/ui/render_schedule.hpp) with a simulated renderer: what it
-// asks to draw, not how long a real GPU takes (no timed assertions).
+// The viewer's logic that needs no window: the render schedule (viewer/ui/render_schedule.hpp) with
+// a simulated renderer (what it asks to draw, not how long a real GPU takes: no timed assertions),
+// and the error list's places and editor commands (viewer/ui/error_list.hpp).
 #include <doctest/doctest.h>
 
 #include <vector>
 
+#include <filesystem>
+#include <fstream>
+
+#include "ui/error_list.hpp"
 #include "ui/render_schedule.hpp"
 
 using namespace fxview;
@@ -95,4 +100,20 @@ TEST_CASE("nothing is drawn while the state is unchanged; a new state or an anim
     CHECK(whole.height == 64);
     schedule.next(32, 64);
     CHECK(schedule.pending());  // a new size starts over
+}
+
+TEST_CASE("error messages become file:line places; each editor gets its own way of naming a line") {
+    const std::string file = (std::filesystem::temp_directory_path() / "fxview-error-list.fx").string();
+    std::ofstream(file) << "x\n";
+    const auto places = ui::error_locations(file + ":12: pass P: no shader 'Missing'\nnote: something\n/no/such/file.fx:3: gone\n" + file +
+                                            ":40: error: x");
+    REQUIRE(places.size() == 2);  // lines naming no existing file are not places
+    CHECK(places[0].line == 12);
+    CHECK(places[0].file == file);
+    CHECK(places[1].line == 40);
+    CHECK(ui::editor_command("code -w", "/a.fx", 7) == std::vector<std::string>{"code", "-w", "--goto", "/a.fx:7"});
+    CHECK(ui::editor_command("subl", "/a.fx", 7) == std::vector<std::string>{"subl", "/a.fx:7"});
+    CHECK(ui::editor_command("emacs -nw", "/a.fx", 7) == std::vector<std::string>{"emacs", "-nw", "+7", "/a.fx"});
+    CHECK(ui::editor_command("/usr/bin/vim", "/a.fx", 7) == std::vector<std::string>{"/usr/bin/vim", "+7", "/a.fx"});
+    std::filesystem::remove(file);
 }

@@ -120,6 +120,31 @@ TEST_CASE("an effect that fails at start is watched: fixing the file opens it") 
     CHECK(r.exit_code == 0);  // wait-effect found the effect loaded, and `technique T` found T
 }
 
+TEST_CASE("errors are listed as file:line places that open in $VISUAL/$EDITOR at that line") {
+    const std::string effect = temp_path("viewer-errors/broken.fx"), script = temp_path("viewer-errors.txt");
+    const std::string editor = temp_path("viewer-errors/editor.sh"), opened = temp_path("viewer-errors/opened.txt");
+    std::filesystem::create_directories(std::filesystem::path(effect).parent_path());
+    std::ofstream(effect) << "// line 1\n\ntechnique T { pass P { VertexShader = VS; FragmentShader = Missing; } }\n";
+    // A stand-in editor that records how it was called.
+    std::ofstream(editor) << "#!/bin/sh\necho \"$@\" > " << opened << "\n";
+    std::filesystem::permissions(editor, std::filesystem::perms::owner_all);
+    std::filesystem::remove(opened);
+    std::ofstream(script) << "open-error 1\n";
+    unsetenv("VISUAL");
+    setenv("EDITOR", editor.c_str(), 1);
+    const Result r = run("view " + effect + " --render-size 32x32 --script " + script + " --frames 30");
+    unsetenv("EDITOR");
+    CAPTURE(r.err);
+    CHECK(r.exit_code == 0);
+    std::string line;
+    for (int wait = 0; wait < 50 && line.empty(); ++wait) {  // the editor runs detached
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        std::ifstream in(opened);
+        std::getline(in, line);
+    }
+    CHECK(line == "+3 " + effect);  // vi/emacs/nano convention: +LINE FILE, at the technique's line
+}
+
 TEST_CASE("view takes render's options: --size, --samples and --debug-view give render's image") {
     const std::string shot = temp_path("view-options.png"), rendered = temp_path("render-options.png");
     const std::string options = " --debug-view uv --size 64x48 --samples 4";

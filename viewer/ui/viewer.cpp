@@ -25,6 +25,7 @@
 #include "render/skybox.hpp"
 #include "scene/shapes.hpp"
 #include "ui/display_pass.hpp"
+#include "ui/error_list.hpp"
 #include "ui/imgui_layer.hpp"
 #include "ui/render_schedule.hpp"
 #include "ui/plugin_panel.hpp"
@@ -645,6 +646,18 @@ private:
 
     void draw_effect_tab() {
         ImGui::TextWrapped("Effect: %s", effect_path_.empty() ? "(none: built-in views)" : effect_path_.c_str());
+        const std::vector<ErrorLocation> errors = error_locations(reload_error_);
+        if (!errors.empty() && ImGui::CollapsingHeader(("Errors (" + std::to_string(errors.size()) + "): click to open in your editor").c_str(),
+                                                       ImGuiTreeNodeFlags_DefaultOpen)) {
+            for (size_t i = 0; i < errors.size(); ++i) {
+                ImGui::PushID(static_cast<int>(i));
+                ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.55f, 0.5f, 1.0f));
+                if (ImGui::Selectable(errors[i].message.c_str())) status_ = open_in_editor(errors[i].file, errors[i].line);
+                ImGui::PopStyleColor();
+                if (ImGui::IsItemHovered()) ImGui::SetTooltip("Open %s at line %d in $VISUAL / $EDITOR", errors[i].file.c_str(), errors[i].line);
+                ImGui::PopID();
+            }
+        }
         if (ImGui::Button("Open...")) {
             browser_files_.clear();
             for (const auto& root : {fs::path(FXVIEW_SOURCE_EFFECTS_DIR), fs::current_path()}) {
@@ -985,6 +998,12 @@ private:
             if (!tabs.count(args[0])) throw UsageError("no tab '" + args[0] + "' (Effect, Scene, Textures, Pick, View, Plugins)");
             requested_tab_ = args[0];
             wait_frames_ = 1;
+        } else if (a.verb == "open-error") {
+            const std::vector<ErrorLocation> errors = error_locations(reload_error_);
+            const int n = std::stoi(args[0]);
+            if (n < 1 || n > static_cast<int>(errors.size()))
+                throw UsageError("open-error " + args[0] + ": there are " + std::to_string(errors.size()) + " error places");
+            status_ = open_in_editor(errors[static_cast<size_t>(n - 1)].file, errors[static_cast<size_t>(n - 1)].line);
         } else if (a.verb == "wait-effect") {
             // Waits, frame by frame, until an effect is loaded (e.g. a failed one was fixed on disk).
             const double limit = std::stod(args[0]);
