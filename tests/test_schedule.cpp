@@ -1,14 +1,16 @@
 // The viewer's logic that needs no window: the render schedule (viewer/ui/render_schedule.hpp) with
 // a simulated renderer (what it asks to draw, not how long a real GPU takes: no timed assertions),
-// and the error list's places and editor commands (viewer/ui/error_list.hpp).
+// the error list's places and editor commands (viewer/ui/error_list.hpp), the Open dialog's listing.
 #include <doctest/doctest.h>
 
 #include <vector>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
 #include "ui/error_list.hpp"
+#include "ui/file_browser.hpp"
 #include "ui/render_schedule.hpp"
 
 using namespace fxview;
@@ -116,4 +118,17 @@ TEST_CASE("error messages become file:line places; each editor gets its own way 
     CHECK(ui::editor_command("emacs -nw", "/a.fx", 7) == std::vector<std::string>{"emacs", "-nw", "+7", "/a.fx"});
     CHECK(ui::editor_command("/usr/bin/vim", "/a.fx", 7) == std::vector<std::string>{"/usr/bin/vim", "+7", "/a.fx"});
     std::filesystem::remove(file);
+}
+
+TEST_CASE("the Open dialog lists one folder: its subfolders and effect files only") {
+    const auto top = ui::list_folder(FXVIEW_SOURCE_EFFECTS_DIR, {".fx"});
+    std::vector<std::string> folders, files;
+    for (const auto& f : top.folders) folders.push_back(f.filename().string());
+    for (const auto& f : top.files) files.push_back(f.filename().string());
+    CHECK(std::find(folders.begin(), folders.end(), "brdf") != folders.end());
+    CHECK(std::find(folders.begin(), folders.end(), "spectral") != folders.end());
+    CHECK(std::find(files.begin(), files.end(), "debug.fx") != files.end());
+    for (const auto& f : files) CHECK(f.ends_with(".fx"));
+    CHECK(ui::list_folder(std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/lib", {".fx"}).files.empty());  // GLSL includes are not effects
+    CHECK(ui::list_folder("/no/such/folder", {".fx"}).files.empty());
 }

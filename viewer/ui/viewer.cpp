@@ -26,6 +26,7 @@
 #include "scene/shapes.hpp"
 #include "ui/display_pass.hpp"
 #include "ui/error_list.hpp"
+#include "ui/file_browser.hpp"
 #include "ui/imgui_layer.hpp"
 #include "ui/render_schedule.hpp"
 #include "ui/plugin_panel.hpp"
@@ -658,27 +659,12 @@ private:
                 ImGui::PopID();
             }
         }
-        if (ImGui::Button("Open...")) {
-            browser_files_.clear();
-            for (const auto& root : {fs::path(FXVIEW_SOURCE_EFFECTS_DIR), fs::current_path()}) {
-                std::error_code error;
-                for (auto it = fs::recursive_directory_iterator(root, error); !error && it != fs::recursive_directory_iterator(); it.increment(error))
-                    if (it->path().extension() == ".fx") browser_files_.push_back(it->path().string());
-            }
-            std::sort(browser_files_.begin(), browser_files_.end());
-            browser_files_.erase(std::unique(browser_files_.begin(), browser_files_.end()), browser_files_.end());
-            ImGui::OpenPopup("Open effect");
-        }
+        if (ImGui::Button("Open...")) ImGui::OpenPopup("Open effect");
         if (ImGui::BeginPopup("Open effect")) {
-            static_assert(sizeof(path_input_) > 1);
-            ImGui::InputText("path", path_input_, sizeof path_input_);
-            if (ImGui::Button("Load path")) load_effect(path_input_, "", {}, ""), ImGui::CloseCurrentPopup();
-            ImGui::Separator();
-            for (const auto& file : browser_files_)
-                if (ImGui::Selectable(file.c_str())) {
-                    load_effect(file, "", {}, "");
-                    ImGui::CloseCurrentPopup();
-                }
+            if (const auto file = file_browser_.draw()) {
+                load_effect(*file, "", {}, "");
+                ImGui::CloseCurrentPopup();
+            }
             ImGui::EndPopup();
         }
         if (!session_) {
@@ -1087,8 +1073,9 @@ private:
     int plugin_start_frame_ = 0;  // plugin-start: frames drawn while the plugin runs
     std::chrono::steady_clock::time_point plugin_start_time_, wait_started_;
     std::string requested_tab_;
-    std::vector<std::string> browser_files_, pending_window_shots_;
-    char path_input_[512] = "effects/debug.fx", preset_input_[512] = "preset.json", obj_input_[512] = "model.obj",
+    std::vector<std::string> pending_window_shots_;
+    FileBrowser file_browser_{FXVIEW_SOURCE_EFFECTS_DIR};
+    char preset_input_[512] = "preset.json", obj_input_[512] = "model.obj",
          texture_input_[512] = "textures/checker.png", shot_input_[512] = "out/screenshot.png", allow_input_[512] = "";
     app::AccessOptions access_ = options_.access;
     std::string requested_effect_path_;  // the last effect asked for, even if it failed to load
