@@ -106,13 +106,14 @@ std::string label_of(const effect::Parameter& p) {
     return (p.ui.label.empty() ? p.name : p.ui.label) + (p.ui.unit.empty() ? "" : " [" + p.ui.unit + "]");
 }
 
-// Parameters a plugin of the effect names in its annotations (its inputs and targets): they matter
-// even when no shader reads them (a film-fit plugin's target colour).
+// Parameters a plugin of the effect reads (named in its annotations): they matter even when no shader
+// reads them (a film-fit plugin's target colour). What a plugin writes (brdf-fit's Targets, film-fit's
+// Vary) matters only to the techniques that read it.
 std::set<std::string> named_by_plugins(const effect::Effect& effect) {
     std::set<std::string> named;
     for (const auto& plugin : effect.plugins)
         for (const auto& annotation : plugin.annotations) {
-            if (!annotation.value.is_string) continue;
+            if (!annotation.value.is_string || annotation.name == "Targets" || annotation.name == "Vary") continue;
             std::stringstream in(annotation.value.text);
             for (std::string part; std::getline(in, part, ',');) {
                 const size_t first = part.find_first_not_of(" \t"), last = part.find_last_not_of(" \t");

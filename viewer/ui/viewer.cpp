@@ -28,7 +28,9 @@
 #include "ui/error_list.hpp"
 #include "ui/file_browser.hpp"
 #include "ui/imgui_layer.hpp"
+#include "ui/pick_panel.hpp"
 #include "ui/render_schedule.hpp"
+#include "ui/scene_layout.hpp"
 #include "ui/plugin_panel.hpp"
 #include "ui/parameter_panel.hpp"
 
@@ -65,22 +67,6 @@ struct ObjectState {
 };
 
 enum class Target { Camera, Light, Object };
-
-struct Pick {
-    bool valid = false;
-    image::PixelInfo info;
-    std::array<double, 2> xy{};  // chromaticity of the linear sRGB value
-};
-
-// xy of a linear sRGB colour (inverse of eq. 9, IEC 61966-2-1 primaries, D65).
-std::array<double, 2> chromaticity_of(const std::array<float, 4>& rgb) {
-    const double r = rgb[0], g = rgb[1], b = rgb[2];
-    const double x = 0.412453 * r + 0.357580 * g + 0.180423 * b;
-    const double y = 0.212671 * r + 0.715160 * g + 0.072169 * b;
-    const double z = 0.019334 * r + 0.119193 * g + 0.950227 * b;
-    const double sum = x + y + z;
-    return sum > 0 ? std::array<double, 2>{x / sum, y / sum} : std::array<double, 2>{0, 0};
-}
 
 void write_window_png(const std::string& path, int width, int height) {
     std::vector<unsigned char> bytes(static_cast<size_t>(width) * height * 4);
@@ -435,12 +421,8 @@ private:
         }
     }
 
-    void pick_at(int x, int y) {
-        const image::FloatImage image = target_->read_color(0);
-        if (x < 0 || y < 0 || x >= image.width || y >= image.height) return;
-        pick_.info = image::inspect_pixel(image, x, y, srgb_display_ ? image::Encoding::Srgb : image::Encoding::Linear);
-        pick_.xy = chromaticity_of(pick_.info.rgba);
-        pick_.valid = true;
+    bool pick_at(int x, int y) {
+        return pick_.pick(target_->read_color(0), x, y, srgb_display_, render_key(target_->width(), target_->height()));
     }
 
     // --- input -----------------------------------------------------------------------------
@@ -599,7 +581,7 @@ private:
                 ImGui::EndTabItem();
             }
             if (ImGui::BeginTabItem("Pick", nullptr, tab_flags("Pick"))) {
-                draw_pick_tab();
+                pick_.draw(target_ ? render_key(target_->width(), target_->height()) : 0);
                 ImGui::EndTabItem();
             }
             if (ImGui::BeginTabItem("View", nullptr, tab_flags("View"))) {
@@ -634,6 +616,12 @@ private:
         else
             ImGui::Dummy(shown);
         handle_render_view_mouse(origin, shown);
+        draw_light_gizmo(ImGui::GetWindowDrawList(), origin, shown);
+        if (target_) {
+            pick_.draw_marker(ImGui::GetWindowDrawList(), origin, shown, target_->width(), target_->height());
+            if (ImGui::IsItemHovered() && !dragging_ && !ImGui::IsMouseDown(ImGuiMouseButton_Right))
+                PickPanel::draw_hover_readout(*target_, origin, shown);
+        }
         if (!reload_error_.empty()) {  // compile errors overlay; the last good effect keeps rendering
             ImGui::SetCursorScreenPos(ImVec2(origin.x + 8, origin.y + 8));
             ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
@@ -724,6 +712,33 @@ private:
         draw_parameter_panel(*session_, shown);
     }
 
+    glm::vec3 beside_the_others(const glm::vec3& scale) const {
+        std::vector<scene::SceneObject> placed;
+        for (const auto& o : objects_) placed.push_back(o.object);
+        return place_beside(placed, scale);
+    }
+
+    // The light as a small sun where it projects into the render view (not when behind the camera).
+    void draw_light_gizmo(ImDrawList* list, ImVec2 origin, ImVec2 shown) const {
+        if (!show_light_ || shown.x <= 0 || shown.y <= 0) return;
+        const glm::mat4 view = math::view_matrix(scene_.camera.pose);
+        const glm::mat4 projection = math::perspective_matrix(scene_.camera.fov_y_degrees, shown.x / shown.y, scene_.camera.near_plane, scene_.camera.far_plane);
+        const glm::vec4 clip = projection * view * glm::vec4(scene_.light.world_position(), 1.0f);
+        if (clip.w <= 0.0f) return;
+        const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+        const ImVec2 at(origin.x + (ndc.x * 0.5f + 0.5f) * shown.x, origin.y + (0.5f - ndc.y * 0.5f) * shown.y);
+        const float r = ImGui::GetFontSize() * 0.45f;
+        const ImU32 colour = selected_ == Target::Light ? IM_COL32(255, 220, 60, 255) : IM_COL32(255, 240, 180, 220);
+        list->AddCircleFilled(at, r, colour);
+        list->AddCircle(at, r, IM_COL32(0, 0, 0, 200), 0, 1.5f);
+        for (int i = 0; i < 8; ++i) {
+            const float angle = static_cast<float>(i) * 0.785398f;
+            const ImVec2 d(std::cos(angle), std::sin(angle));
+            list->AddLine(ImVec2(at.x + d.x * r * 1.4f, at.y + d.y * r * 1.4f), ImVec2(at.x + d.x * r * 2.0f, at.y + d.y * r * 2.0f), colour, 1.5f);
+        }
+        list->AddText(ImVec2(at.x + r * 2.2f, at.y - r), colour, "light");
+    }
+
     void draw_scene_tab() {
         ImGui::TextUnformatted("Turn with the left mouse button, move with the right, zoom with the wheel.");
         const char* targets[] = {"Camera", "Light", "Object"};
@@ -732,17 +747,23 @@ private:
         ImGui::DragFloat("camera distance", &scene_.camera.pose.distance, 0.02f, 0.1f, 100.0f);
         ImGui::DragFloat2("camera pan", &scene_.camera.pose.pan.x, 0.01f);
         ImGui::SliderFloat("field of view", &scene_.camera.fov_y_degrees, 5.0f, 120.0f);
-        ImGui::DragFloat3("light position", &scene_.light.pose.position.x, 0.05f);
+        // The light's world position (drags orbit it: the field follows them, and editing it moves the light there).
+        glm::vec3 light = scene_.light.world_position();
+        if (ImGui::DragFloat3("light position", &light.x, 0.05f))
+            scene_.light.pose.position = glm::inverse(glm::mat3_cast(scene_.light.pose.rotation)) * light;
+        ImGui::Checkbox("show the light in the view", &show_light_);
         ImGui::ColorEdit4("background", &scene_.background.r, ImGuiColorEditFlags_Float);
         ImGui::Separator();
         if (ImGui::Button("Add")) {
-            objects_.push_back({scene::SceneObject{}, session_ ? session_->technique() : "", session_ ? ViewMode::Effect : ViewMode::Normals, false});
+            ObjectState added{scene::SceneObject{}, session_ ? session_->technique() : "", session_ ? ViewMode::Effect : ViewMode::Normals, false};
+            added.object.pose.position = beside_the_others(added.object.scale);
+            objects_.push_back(added);
             selected_object_ = static_cast<int>(objects_.size()) - 1;
         }
         ImGui::SameLine();
         if (ImGui::Button("Duplicate") && !objects_.empty()) {
             ObjectState copy = objects_[static_cast<size_t>(selected_object_)];
-            copy.object.pose.position.x += 0.5f;
+            copy.object.pose.position = beside_the_others(copy.object.scale);
             objects_.push_back(copy);
             selected_object_ = static_cast<int>(objects_.size()) - 1;
         }
@@ -853,25 +874,6 @@ private:
         }
     }
 
-    void draw_pick_tab() {
-        ImGui::TextUnformatted("Click the render view (without dragging) to pick a pixel.");
-        if (!pick_.valid) return;
-        const auto& p = pick_.info;
-        ImGui::Text("pixel      %d, %d", p.x, p.y);
-        ImGui::Text("float RGBA %.6g %.6g %.6g %.6g", p.rgba[0], p.rgba[1], p.rgba[2], p.rgba[3]);
-        ImGui::Text("8-bit      %u %u %u %u (%s)", p.rgba8[0], p.rgba8[1], p.rgba8[2], p.rgba8[3], srgb_display_ ? "sRGB" : "linear");
-        ImGui::Text("packed     %u (0x%08X)", p.packed, p.packed);
-        ImGui::Text("normal     %.4f %.4f %.4f", p.normal.x, p.normal.y, p.normal.z);
-        ImGui::Text("xy         %.4f %.4f", pick_.xy[0], pick_.xy[1]);
-        if (target_ && display_->texture()) {  // magnifier: 15x15 texels around the pick
-            const float w = static_cast<float>(target_->width()), h = static_cast<float>(target_->height());
-            const float radius = 7.5f;
-            const ImVec2 uv0((p.x + 0.5f - radius) / w, 1.0f - (p.y + 0.5f - radius) / h);
-            const ImVec2 uv1((p.x + 0.5f + radius) / w, 1.0f - (p.y + 0.5f + radius) / h);
-            ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(display_->texture())), ImVec2(180, 180), uv0, uv1);
-        }
-    }
-
     void draw_view_tab() {
         ImGui::Checkbox("pause rendering (Space)", &paused_);
         if (ImGui::Checkbox("vsync (V)", &vsync_)) glfwSwapInterval(vsync_ ? 1 : 0);
@@ -960,12 +962,11 @@ private:
             selected_ = saved;
         } else if (a.verb == "pick") {
             render_scene(*target_);
-            pick_at(std::stoi(args[0]), std::stoi(args[1]));
-            if (!pick_.valid) throw UsageError("pick outside the render view");
-            const auto& p = pick_.info;
+            if (!pick_at(std::stoi(args[0]), std::stoi(args[1]))) throw UsageError("pick outside the render view");
+            const auto& p = pick_.info();
             std::cout << nlohmann::json{{"x", p.x}, {"y", p.y}, {"width", target_->width()}, {"height", target_->height()},
                                         {"rgba", p.rgba}, {"rgba8", p.rgba8}, {"packed", p.packed},
-                                        {"normal", {p.normal.x, p.normal.y, p.normal.z}}, {"xy", pick_.xy}}
+                                        {"normal", {p.normal.x, p.normal.y, p.normal.z}}, {"xy", pick_.chromaticity()}}
                              .dump()
                       << std::endl;
         } else if (a.verb == "screenshot") {
@@ -1065,10 +1066,11 @@ private:
     bool dragging_ = false, drag_moved_ = false;
     glm::vec2 drag_last_{0.0f};
     glm::ivec2 view_size_{640, 480}, windowed_pos_{0}, windowed_size_{1280, 800}, shot_size_{1920, 1080};
+    bool show_light_ = true;
     bool paused_ = false, vsync_ = true, srgb_display_ = true, show_help_ = false, transparent_shots_ = false;
     int samples_ = 0, sampler_choice_ = 0, frame_number_ = 0, exit_code_ = 0;
     double frame_seconds_ = 0;
-    Pick pick_;
+    PickPanel pick_;
     PluginPanel plugin_panel_;
     int plugin_start_frame_ = 0;  // plugin-start: frames drawn while the plugin runs
     std::chrono::steady_clock::time_point plugin_start_time_, wait_started_;

@@ -12,6 +12,7 @@
 #include "ui/error_list.hpp"
 #include "ui/file_browser.hpp"
 #include "ui/render_schedule.hpp"
+#include "ui/scene_layout.hpp"
 
 using namespace fxview;
 
@@ -131,4 +132,16 @@ TEST_CASE("the Open dialog lists one folder: its subfolders and effect files onl
     for (const auto& f : files) CHECK(f.ends_with(".fx"));
     CHECK(ui::list_folder(std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/lib", {".fx"}).files.empty());  // GLSL includes are not effects
     CHECK(ui::list_folder("/no/such/folder", {".fx"}).files.empty());
+}
+
+TEST_CASE("an added object is placed right of the others, never inside one") {
+    std::vector<scene::SceneObject> objects(1);
+    const glm::vec3 first = ui::place_beside(objects, glm::vec3(1.0f));
+    CHECK(first.x == doctest::Approx(2.25f));  // the unit sphere's edge at 1, a gap of 0.25, its own radius 1
+    objects.push_back({});
+    objects.back().pose.position = first;
+    objects.back().scale = glm::vec3(2.0f);  // scaled up after placing: reaches 4.25
+    const glm::vec3 third = ui::place_beside(objects, glm::vec3(0.5f));
+    CHECK(third.x == doctest::Approx(4.25f + 0.25f + 0.5f));
+    for (const auto& o : objects) CHECK(std::abs(third.x - o.pose.position.x) >= ui::object_extent(o.scale) + 0.5f);
 }
