@@ -145,6 +145,25 @@ TEST_CASE("errors are listed as file:line places that open in $VISUAL/$EDITOR at
     CHECK(line == "+3 " + effect);  // vi/emacs/nano convention: +LINE FILE, at the technique's line
 }
 
+TEST_CASE("the texture inspector opens on a texture by script; an unknown texture or channel is named") {
+    const std::string textured = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/examples/textured.fx", script = temp_path("inspect.txt");
+    for (const char* line : {"inspect-texture Checker g 2", "inspect-texture SkyTexture", "inspect-texture Checker a -1"}) {
+        std::ofstream(script) << line << "\nframes 3\n";
+        const Result r = run("view " + textured + " --render-size 32x32 --script " + script + " --frames 2");
+        CAPTURE(line);
+        CAPTURE(r.err);
+        CHECK(r.exit_code == 0);
+    }
+    std::ofstream(script) << "inspect-texture Nothing\n";
+    const Result missing = run("view " + textured + " --render-size 32x32 --script " + script + " --frames 2");
+    CHECK(missing.exit_code == 1);
+    CHECK(missing.err.find("no texture 'Nothing'") != std::string::npos);
+    std::ofstream(script) << "inspect-texture Checker q\n";
+    const Result channel = run("view " + textured + " --render-size 32x32 --script " + script + " --frames 2");
+    CHECK(channel.exit_code == 1);
+    CHECK(channel.err.find("channel rgba, r, g, b or a") != std::string::npos);
+}
+
 TEST_CASE("view takes render's options: --size, --samples and --debug-view give render's image") {
     const std::string shot = temp_path("view-options.png"), rendered = temp_path("render-options.png");
     const std::string options = " --debug-view uv --size 64x48 --samples 4";

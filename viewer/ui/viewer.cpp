@@ -31,6 +31,7 @@
 #include "ui/pick_panel.hpp"
 #include "ui/render_schedule.hpp"
 #include "ui/scene_layout.hpp"
+#include "ui/texture_panel.hpp"
 #include "ui/plugin_panel.hpp"
 #include "ui/parameter_panel.hpp"
 
@@ -98,6 +99,7 @@ public:
         glfwSwapInterval(vsync_ ? 1 : 0);
         imgui_ = std::make_unique<ImGuiLayer>(window_, options.ui_scale);
         display_ = std::make_unique<DisplayPass>();
+        texture_panel_ = std::make_unique<TexturePanel>();
         debug_ = std::make_unique<render::DebugRenderer>();
         skybox_ = std::make_unique<render::Skybox>();
         scene_ = options.scene;
@@ -258,24 +260,6 @@ private:
         if (!session_ || skybox_name_.empty()) return nullptr;
         const render::GpuTexture* texture = session_->resources().find(skybox_name_);
         return texture && texture->type == texture::TextureType::Cube ? texture : nullptr;
-    }
-
-    // 2D views of a cube map's six faces (GL texture views), made once per texture, for the cross.
-    const std::array<gl::Texture, 6>& face_views(const render::GpuTexture& cube) {
-        auto& views = cube_views_[cube.texture.get()];
-        if (!views[0]) {
-            GLint internal = 0;
-            glGetTextureLevelParameteriv(cube.texture.get(), 0, GL_TEXTURE_INTERNAL_FORMAT, &internal);
-            GLint levels = 1;
-            glGetTextureParameteriv(cube.texture.get(), GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
-            for (GLuint face = 0; face < 6; ++face) {
-                GLuint name = 0;
-                glGenTextures(1, &name);  // a view needs an unbound, never-bound name
-                glTextureView(name, GL_TEXTURE_2D, cube.texture.get(), static_cast<GLenum>(internal), 0, static_cast<GLuint>(levels), face, 1);
-                views[face] = gl::Texture(name);
-            }
-        }
-        return views;
     }
 
     // A hash of everything the picture depends on: scene, objects and their views, effect (a reload
@@ -577,7 +561,8 @@ private:
                 ImGui::EndTabItem();
             }
             if (ImGui::BeginTabItem("Textures", nullptr, tab_flags("Textures"))) {
-                draw_texture_tab();
+                if (session_) texture_panel_->draw(*session_, skybox_name_, status_);
+                else ImGui::TextUnformatted("No effect loaded.");
                 ImGui::EndTabItem();
             }
             if (ImGui::BeginTabItem("Pick", nullptr, tab_flags("Pick"))) {
@@ -811,69 +796,6 @@ private:
         ImGui::DragFloat3("scale", &o.object.scale.x, 0.01f, 0.01f, 100.0f);
     }
 
-    void draw_texture_tab() {
-        if (!session_) {
-            ImGui::TextUnformatted("No effect loaded.");
-            return;
-        }
-        for (const auto& [name, texture] : session_->resources().textures()) {
-            ImGui::PushID(name.c_str());
-            ImGui::Text("%s  %dx%d  %s  %s", name.c_str(), texture.width, texture.height, texture::format_name(texture.format),
-                        texture.type == texture::TextureType::Cube ? "cube" : texture.type == texture::TextureType::Tex3D ? "3D" : "");
-            ImGui::TextDisabled("%s", texture.source.c_str());
-            if (texture.type == texture::TextureType::Tex2D) {
-                const float h = std::min(96.0f, 96.0f * texture.height / std::max(1, texture.width) * 4);
-                ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture.texture.get())), ImVec2(96, std::max(8.0f, h)),
-                             ImVec2(0, 1), ImVec2(1, 0));
-            } else if (texture.type == texture::TextureType::Cube) {
-                // Shown as a horizontal cross: +Y above, -X +Z +X -Z in the middle row, -Y below.
-                const auto& views = face_views(texture);
-                const float cell = 40.0f;
-                const ImVec2 origin = ImGui::GetCursorScreenPos();
-                const int cells[6][2] = {{2, 1}, {0, 1}, {1, 0}, {1, 2}, {1, 1}, {3, 1}};
-                for (int face = 0; face < 6; ++face) {
-                    ImGui::SetCursorScreenPos(ImVec2(origin.x + cells[face][0] * cell, origin.y + cells[face][1] * cell));
-                    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(views[static_cast<size_t>(face)].get())), ImVec2(cell, cell));
-                }
-                ImGui::SetCursorScreenPos(ImVec2(origin.x, origin.y + 3 * cell + 4));
-                bool sky = skybox_name_ == name;
-                if (ImGui::Checkbox("skybox", &sky)) skybox_name_ = sky ? name : "";
-            }
-            ImGui::PopID();
-        }
-        ImGui::Separator();
-        std::vector<std::string> samplers;
-        for (const auto& p : session_->effect().parameters)
-            if (effect::is_sampler_type(p.type)) samplers.push_back(p.name);
-        if (samplers.empty()) return;
-        sampler_choice_ = std::min(sampler_choice_, static_cast<int>(samplers.size()) - 1);
-        if (ImGui::BeginCombo("sampler", samplers[static_cast<size_t>(sampler_choice_)].c_str())) {
-            for (int i = 0; i < static_cast<int>(samplers.size()); ++i)
-                if (ImGui::Selectable(samplers[static_cast<size_t>(i)].c_str(), i == sampler_choice_)) sampler_choice_ = i;
-            ImGui::EndCombo();
-        }
-        if (ImGui::BeginCombo("loaded file", "pick a loaded texture")) {
-            for (const auto& [name, texture] : session_->resources().textures())
-                if (texture.source.find('/') != std::string::npos && ImGui::Selectable(texture.source.c_str()))
-                    std::snprintf(texture_input_, sizeof texture_input_, "%s", texture.source.c_str());
-            ImGui::EndCombo();
-        }
-        ImGui::InputText("texture file", texture_input_, sizeof texture_input_);
-        if (ImGui::Button("Assign to sampler")) {
-            const std::string sampler = samplers[static_cast<size_t>(sampler_choice_)];
-            const auto before = session_->values().textures;
-            session_->values().textures[sampler] = texture_input_;
-            try {
-                session_->reload_textures();
-                status_ = "assigned " + std::string(texture_input_) + " to " + sampler;
-            } catch (const std::exception& e) {
-                session_->values().textures = before;  // keep what worked
-                session_->reload_textures();
-                status_ = e.what();
-            }
-        }
-    }
-
     void draw_view_tab() {
         ImGui::Checkbox("pause rendering (Space)", &paused_);
         if (ImGui::Checkbox("vsync (V)", &vsync_)) glfwSwapInterval(vsync_ ? 1 : 0);
@@ -985,6 +907,17 @@ private:
             if (!tabs.count(args[0])) throw UsageError("no tab '" + args[0] + "' (Effect, Scene, Textures, Pick, View, Plugins)");
             requested_tab_ = args[0];
             wait_frames_ = 1;
+        } else if (a.verb == "inspect-texture") {
+            if (!session_ || !session_->resources().find(args[0])) throw UsageError("inspect-texture: the effect has no texture '" + args[0] + "'");
+            const char* channels[] = {"rgba", "r", "g", "b", "a"};
+            int channel = 0;
+            if (args.size() > 1) {
+                channel = static_cast<int>(std::find(std::begin(channels), std::end(channels), args[1]) - std::begin(channels));
+                if (channel == 5) throw UsageError("inspect-texture: channel rgba, r, g, b or a");
+            }
+            texture_panel_->inspect(args[0], channel, args.size() > 2 ? std::stof(args[2]) : 0.0f);
+            requested_tab_ = "Textures";
+            wait_frames_ = 1;
         } else if (a.verb == "open-error") {
             const std::vector<ErrorLocation> errors = error_locations(reload_error_);
             const int n = std::stoi(args[0]);
@@ -1052,7 +985,7 @@ private:
     std::unique_ptr<render::DebugRenderer> debug_;
     std::unique_ptr<render::Skybox> skybox_;
     std::string skybox_name_;
-    std::map<GLuint, std::array<gl::Texture, 6>> cube_views_;
+    std::unique_ptr<TexturePanel> texture_panel_;
     std::unique_ptr<render::EffectSession> session_;
     std::unique_ptr<gl::RenderTarget> target_;
     RenderSchedule schedule_;
@@ -1068,7 +1001,7 @@ private:
     glm::ivec2 view_size_{640, 480}, windowed_pos_{0}, windowed_size_{1280, 800}, shot_size_{1920, 1080};
     bool show_light_ = true;
     bool paused_ = false, vsync_ = true, srgb_display_ = true, show_help_ = false, transparent_shots_ = false;
-    int samples_ = 0, sampler_choice_ = 0, frame_number_ = 0, exit_code_ = 0;
+    int samples_ = 0, frame_number_ = 0, exit_code_ = 0;
     double frame_seconds_ = 0;
     PickPanel pick_;
     PluginPanel plugin_panel_;
@@ -1078,7 +1011,7 @@ private:
     std::vector<std::string> pending_window_shots_;
     FileBrowser file_browser_{FXVIEW_SOURCE_EFFECTS_DIR};
     char preset_input_[512] = "preset.json", obj_input_[512] = "model.obj",
-         texture_input_[512] = "textures/checker.png", shot_input_[512] = "out/screenshot.png", allow_input_[512] = "";
+         shot_input_[512] = "out/screenshot.png", allow_input_[512] = "";
     app::AccessOptions access_ = options_.access;
     std::string requested_effect_path_;  // the last effect asked for, even if it failed to load
     std::filesystem::file_time_type failed_write_time_{};  // its modification time at the last attempt
