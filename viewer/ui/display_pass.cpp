@@ -1,33 +1,24 @@
 #include "ui/display_pass.hpp"
 
+#include <string>
+
 #include "gl/program.hpp"
+#include "ui/ui_shaders.hpp"
 
 namespace fxview::ui {
 
 namespace {
 
-constexpr const char* kVertex = R"(#version 450 core
-out vec2 uv;
-void main() {
-    vec2 corner = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
-    uv = corner;
-    gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
-})";
-
-// IEC 61966-2-1 encoding, the same curve as image::srgb_encode.
-constexpr const char* kFragment = R"(#version 450 core
+// Blends over a dark grey so that uncovered (alpha 0) pixels read as background, then encodes.
+const std::string kFragment = std::string(R"(#version 450 core
 in vec2 uv;
 uniform sampler2D u_source;
 uniform bool u_srgb;
 uniform float u_backdrop;
 layout(location = 0) out vec4 color;
-vec3 encode(vec3 c) {
-    c = clamp(c, 0.0, 1.0);
-    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
-}
+)") + kSrgbEncodeGlsl + R"(
 void main() {
     vec4 linear = texelFetch(u_source, ivec2(gl_FragCoord.xy), 0);
-    // Blend over a dark grey so that uncovered (alpha 0) pixels read as background.
     vec3 shown = mix(vec3(u_backdrop), linear.rgb, clamp(linear.a, 0.0, 1.0));
     color = vec4(u_srgb ? encode(shown) : clamp(shown, 0.0, 1.0), 1.0);
 })";
@@ -35,7 +26,7 @@ void main() {
 }  // namespace
 
 DisplayPass::DisplayPass()
-    : program_(gl::link_program({{GL_VERTEX_SHADER, kVertex, "display pass"}, {GL_FRAGMENT_SHADER, kFragment, "display pass"}})),
+    : program_(gl::link_program({{GL_VERTEX_SHADER, kFullscreenVertexShader, "display pass"}, {GL_FRAGMENT_SHADER, kFragment, "display pass"}})),
       vertex_array_(gl::create_vertex_array()) {}
 
 void DisplayPass::run(GLuint source, int width, int height, bool srgb) {

@@ -10,21 +10,14 @@
 #include "gl/program.hpp"
 #include "texture/texture_data.hpp"
 #include "texture/texture_file.hpp"
+#include "ui/ui_shaders.hpp"
 
 namespace fxview::ui {
 namespace {
 
-constexpr const char* kVertex = R"(#version 450 core
-out vec2 uv;
-void main() {
-    vec2 corner = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
-    uv = vec2(corner.x, 1.0 - corner.y);  // top row first, as the panel shows it
-    gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
-})";
-
 // Texels by texelFetch (exact values, whatever the sampler state), the channel chosen, times 2^EV,
 // sRGB-encoded for display; the raw value goes to the second target for the readout.
-constexpr const char* kFragment = R"(#version 450 core
+const std::string kFragment = std::string(R"(#version 450 core
 in vec2 uv;
 uniform sampler1D u_1d;
 uniform sampler2D u_2d;
@@ -36,12 +29,9 @@ uniform vec2 u_from, u_to;  // texture coordinates at the preview's corners
 uniform bool u_srgb;
 layout(location = 0) out vec4 shown;
 layout(location = 1) out vec4 raw;
-vec3 encode(vec3 c) {
-    c = clamp(c, 0.0, 1.0);
-    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
-}
+)") + kSrgbEncodeGlsl + R"(
 void main() {
-    vec2 t = mix(u_from, u_to, uv);
+    vec2 t = mix(u_from, u_to, vec2(uv.x, 1.0 - uv.y));  // the panel shows the top row first
     if (any(lessThan(t, vec2(0.0))) || any(greaterThanEqual(t, vec2(1.0)))) {
         shown = vec4(0.12, 0.12, 0.12, 1.0);
         raw = vec4(0.0);
@@ -82,7 +72,7 @@ const char* type_name(texture::TextureType type) {
 }  // namespace
 
 TexturePanel::TexturePanel()
-    : program_(gl::link_program({{GL_VERTEX_SHADER, kVertex, "texture inspector"}, {GL_FRAGMENT_SHADER, kFragment, "texture inspector"}})),
+    : program_(gl::link_program({{GL_VERTEX_SHADER, kFullscreenVertexShader, "texture inspector"}, {GL_FRAGMENT_SHADER, kFragment, "texture inspector"}})),
       vertex_array_(gl::create_vertex_array()) {}
 
 // 2D views of a cube map's six faces (GL texture views), made once per texture.
