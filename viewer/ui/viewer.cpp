@@ -30,7 +30,7 @@
 #include "ui/imgui_layer.hpp"
 #include "ui/pick_panel.hpp"
 #include "ui/render_schedule.hpp"
-#include "ui/scene_layout.hpp"
+#include "ui/scene_panel.hpp"
 #include "ui/texture_panel.hpp"
 #include "ui/plugin_panel.hpp"
 #include "ui/parameter_panel.hpp"
@@ -39,35 +39,6 @@ namespace fxview::ui {
 namespace {
 
 namespace fs = std::filesystem;
-
-// What each object shows: the effect (with its own technique) or one of the built-in views.
-enum class ViewMode { Effect, Plain, Normals, TexCoords, ToCamera, ToLight };
-constexpr const char* kViewNames[] = {"effect", "plain", "normals", "uv", "camera", "light"};
-
-ViewMode parse_view(const std::string& name) {
-    for (int i = 0; i < 6; ++i)
-        if (name == kViewNames[i]) return static_cast<ViewMode>(i);
-    throw UsageError("unknown view '" + name + "' (effect, plain, normals, uv, camera, light)");
-}
-
-render::DebugView debug_view(ViewMode mode) {
-    switch (mode) {
-        case ViewMode::Normals: return render::DebugView::Normals;
-        case ViewMode::TexCoords: return render::DebugView::TexCoords;
-        case ViewMode::ToCamera: return render::DebugView::ToCamera;
-        case ViewMode::ToLight: return render::DebugView::ToLight;
-        default: return render::DebugView::Plain;
-    }
-}
-
-struct ObjectState {
-    scene::SceneObject object;
-    std::string technique;
-    ViewMode view = ViewMode::Effect;
-    bool grouped = false;
-};
-
-enum class Target { Camera, Light, Object };
 
 void write_window_png(const std::string& path, int width, int height) {
     std::vector<unsigned char> bytes(static_cast<size_t>(width) * height * 4);
@@ -102,14 +73,14 @@ public:
         texture_panel_ = std::make_unique<TexturePanel>();
         debug_ = std::make_unique<render::DebugRenderer>();
         skybox_ = std::make_unique<render::Skybox>();
-        scene_ = options.scene;
-        initial_scene_ = options.scene;
-        for (const auto& object : options.scene.objects) objects_.push_back({object, options.technique, ViewMode::Effect, false});
+        view_.scene = options.scene;
+        view_.initial = options.scene;
+        for (const auto& object : options.scene.objects) view_.objects.push_back({object, options.technique, ViewMode::Effect, false});
         if (!options.effect_path.empty()) load_effect(options.effect_path, options.technique, options.sets, options.preset);
         if (!session_)
-            for (auto& o : objects_) o.view = ViewMode::Normals;
+            for (auto& o : view_.objects) o.view = ViewMode::Normals;
         if (!options.debug_view.empty())
-            for (auto& o : objects_) o.view = parse_view(options.debug_view);
+            for (auto& o : view_.objects) o.view = parse_view(options.debug_view);
         samples_ = options.samples;
         script_ = options.script;
     }
@@ -187,7 +158,7 @@ private:
             session_ = app::open_effect_session(effect_options);
             effect_path_ = path;
             reload_error_.clear();
-            for (auto& o : objects_) {
+            for (auto& o : view_.objects) {
                 o.technique = session_->technique();
                 if (o.view != ViewMode::Effect && o.view != ViewMode::Plain) o.view = ViewMode::Effect;
             }
@@ -230,14 +201,14 @@ private:
     // --- rendering -------------------------------------------------------------------------
     void render_scene(const gl::RenderTarget& target) {
         target.bind_for_drawing();
-        glClearColor(scene_.background.r, scene_.background.g, scene_.background.b, scene_.background.a);
+        glClearColor(view_.scene.background.r, view_.scene.background.g, view_.scene.background.b, view_.scene.background.a);
         glClearDepth(1.0);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glDepthMask(GL_TRUE);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         const render::GpuTexture* sky = skybox_texture();
-        for (const auto& o : objects_) {
-            scene::Scene single = scene_;
+        for (const auto& o : view_.objects) {
+            scene::Scene single = view_.scene;
             single.objects = {o.object};
             try {
                 if (o.view == ViewMode::Effect && session_) {
@@ -252,7 +223,7 @@ private:
                 reload_error_ = error.what();
             }
         }
-        if (sky) skybox_->draw(sky->texture.get(), scene_.camera, target);
+        if (sky) skybox_->draw(sky->texture.get(), view_.scene.camera, target);
         target.resolve();
     }
 
@@ -266,14 +237,8 @@ private:
     // makes a new one), parameter values, display settings and size.
     std::uint64_t render_key(int width, int height) const {
         StateHash h;
-        h.add(width).add(height).add(samples_).add(srgb_display_).add(scene_.camera.pose.distance);
-        h.add_bytes(&scene_.camera.pose, sizeof scene_.camera.pose).add(scene_.camera.fov_y_degrees).add(scene_.camera.near_plane).add(scene_.camera.far_plane);
-        h.add_bytes(&scene_.light.pose, sizeof scene_.light.pose).add_bytes(&scene_.light.color, sizeof scene_.light.color).add(scene_.light.intensity);
-        h.add_bytes(&scene_.background, sizeof scene_.background).add(skybox_name_);
-        for (const auto& o : objects_) {
-            h.add(o.object.mesh).add_bytes(&o.object.pose, sizeof o.object.pose).add_bytes(&o.object.scale, sizeof o.object.scale);
-            h.add(o.technique).add(static_cast<int>(o.view));
-        }
+        h.add(width).add(height).add(samples_).add(srgb_display_).add(skybox_name_);
+        view_.add_to(h);
         if (session_) {
             h.add(reinterpret_cast<std::uintptr_t>(&session_->effect())).add(reinterpret_cast<std::uintptr_t>(&session_->resources()));
             h.add(session_->technique());
@@ -291,16 +256,16 @@ private:
     void update_coverage(int width, int height) {
         if (schedule_.pictures() > 0 && schedule_.last_picture_seconds() < 0.05) return;
         StateHash h;
-        h.add(width).add(height).add_bytes(&scene_.camera.pose, sizeof scene_.camera.pose).add(scene_.camera.fov_y_degrees);
-        for (const auto& o : objects_) h.add(o.object.mesh).add_bytes(&o.object.pose, sizeof o.object.pose).add_bytes(&o.object.scale, sizeof o.object.scale);
+        h.add(width).add(height);
+        view_.add_to(h);  // more than the geometry (a new colour redoes it too): cheap, and only for slow pictures
         if (h.value() == coverage_key_) return;
         coverage_key_ = h.value();
         const int w = std::max(1, width / 4), ht = std::max(1, height / 4);
         gl::RenderTarget small({w, ht, 1, 0});
-        scene::Scene scene = scene_;
+        scene::Scene scene = view_.scene;
         scene.background = glm::vec4(0.0f);
         scene.objects.clear();
-        for (const auto& o : objects_) scene.objects.push_back(o.object);
+        for (const auto& o : view_.objects) scene.objects.push_back(o.object);
         debug_->render(scene, render::DebugView::Normals, small, true);
         const image::FloatImage image = small.read_color(0);  // top row first
         std::vector<double> rows(static_cast<size_t>(height), 0.0);
@@ -315,14 +280,14 @@ private:
 
     bool picture_animated() const {
         if (!session_) return false;
-        for (const auto& o : objects_)
+        for (const auto& o : view_.objects)
             if (o.view == ViewMode::Effect && session_->animated(o.technique.empty() ? session_->technique() : o.technique)) return true;
         return false;
     }
 
     bool picture_progressive() const {
         if (!session_) return true;
-        for (const auto& o : objects_)
+        for (const auto& o : view_.objects)
             if (o.view == ViewMode::Effect && session_->renders_to_textures(o.technique.empty() ? session_->technique() : o.technique)) return false;
         return true;
     }
@@ -410,92 +375,23 @@ private:
     }
 
     // --- input -----------------------------------------------------------------------------
-    void rotate_selected(const glm::quat& view_rotation) {
-        if (selected_ == Target::Camera) {
-            scene_.camera.pose.rotation = glm::normalize(view_rotation * scene_.camera.pose.rotation);
-        } else if (selected_ == Target::Light) {
-            scene_.light.pose.rotation = math::rotate_in_view(scene_.light.pose.rotation, view_rotation, scene_.camera.pose.rotation);
-        } else if (!objects_.empty()) {
-            auto& selected = objects_[static_cast<size_t>(selected_object_)];
-            const bool group = selected.grouped;
-            for (auto& o : objects_)
-                if (&o == &selected || (group && o.grouped))
-                    o.object.pose.rotation = math::rotate_in_view(o.object.pose.rotation, view_rotation, scene_.camera.pose.rotation);
-        }
-    }
-
-    void reset_selected() {
-        if (selected_ == Target::Camera) scene_.camera = initial_scene_.camera;
-        else if (selected_ == Target::Light) scene_.light = initial_scene_.light;
-        else if (!objects_.empty()) {
-            auto& o = objects_[static_cast<size_t>(selected_object_)].object;
-            o.pose = {};
-            o.scale = glm::vec3(1.0f);
-        }
-    }
-
-    void handle_render_view_mouse(const ImVec2& origin, const ImVec2& size) {
-        ImGuiIO& io = ImGui::GetIO();
-        if (!ImGui::IsItemHovered() && !dragging_) return;
-        const auto to_ndc = [&](ImVec2 p) {
-            return glm::vec2((p.x - origin.x) / size.x * 2.0f - 1.0f, 1.0f - (p.y - origin.y) / size.y * 2.0f);
-        };
-        if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-            dragging_ = true;
-            drag_moved_ = false;
-            drag_last_ = to_ndc(io.MousePos);
-        }
-        if (dragging_ && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-            const glm::vec2 now = to_ndc(io.MousePos);
-            if (glm::length(now - drag_last_) > 1e-4f) {
-                rotate_selected(math::arcball_rotation(drag_last_, now));
-                drag_last_ = now;
-                drag_moved_ = true;
-            }
-        }
-        if (dragging_ && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
-            dragging_ = false;
-            if (!drag_moved_) {  // a click without a drag picks the pixel under the cursor
-                const float u = (io.MousePos.x - origin.x) / size.x, v = (io.MousePos.y - origin.y) / size.y;
-                pick_at(static_cast<int>(u * target_->width()), static_cast<int>(v * target_->height()));
-            }
-        }
-        if (ImGui::IsItemHovered() && ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {  // move in the view plane
-            const ImVec2 delta = io.MouseDelta;
-            const float scale = scene_.camera.pose.distance / size.y * 1.2f;
-            const glm::vec3 view_move(delta.x * scale, -delta.y * scale, 0.0f);
-            const glm::vec3 world_move = glm::inverse(glm::mat3_cast(scene_.camera.pose.rotation)) * view_move;
-            if (selected_ == Target::Camera) scene_.camera.pose.pan -= glm::vec2(view_move);
-            else if (selected_ == Target::Light) scene_.light.pose.position += glm::vec3(glm::mat3_cast(glm::inverse(scene_.light.pose.rotation)) * world_move);
-            else if (!objects_.empty()) {
-                auto& selected = objects_[static_cast<size_t>(selected_object_)];
-                for (auto& o : objects_)
-                    if (&o == &selected || (selected.grouped && o.grouped)) o.object.pose.position += world_move;
-            }
-        }
-        if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f)  // camera Z translation = zoom
-            scene_.camera.pose.distance = std::clamp(scene_.camera.pose.distance * std::pow(0.9f, io.MouseWheel), 0.1f, 100.0f);
-    }
-
     void handle_keys() {
         if (ImGui::GetIO().WantCaptureKeyboard) return;
         const bool shift = ImGui::GetIO().KeyShift;
         if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space))) paused_ = !paused_;
         const auto pressed = [](int key) { return ImGui::IsKeyPressed(key); };
-        if (pressed(GLFW_KEY_C)) selected_ = Target::Camera;
-        if (pressed(GLFW_KEY_L)) selected_ = Target::Light;
-        if (pressed(GLFW_KEY_O) && !objects_.empty()) selected_ = Target::Object;
-        if (pressed(GLFW_KEY_TAB) && !objects_.empty()) {
-            selected_ = Target::Object;
-            selected_object_ = (selected_object_ + 1) % static_cast<int>(objects_.size());
+        if (pressed(GLFW_KEY_C)) view_.selected = Target::Camera;
+        if (pressed(GLFW_KEY_L)) view_.selected = Target::Light;
+        if (pressed(GLFW_KEY_O) && !view_.objects.empty()) view_.selected = Target::Object;
+        if (pressed(GLFW_KEY_TAB) && !view_.objects.empty()) {
+            view_.selected = Target::Object;
+            view_.selected_object = (view_.selected_object + 1) % static_cast<int>(view_.objects.size());
         }
         if (pressed(GLFW_KEY_R)) {
             if (shift) {
-                scene_.camera = initial_scene_.camera;
-                scene_.light = initial_scene_.light;
-                for (auto& o : objects_) o.object.pose = {}, o.object.scale = glm::vec3(1.0f);
+                view_.reset_all();
             } else {
-                reset_selected();
+                view_.reset_selected();
             }
         }
         if (pressed(GLFW_KEY_V)) {
@@ -557,7 +453,7 @@ private:
                 ImGui::EndTabItem();
             }
             if (ImGui::BeginTabItem("Scene", nullptr, tab_flags("Scene"))) {
-                draw_scene_tab();
+                draw_scene_panel(view_, session_ ? session_->technique() : "", session_ != nullptr, status_);
                 ImGui::EndTabItem();
             }
             if (ImGui::BeginTabItem("Textures", nullptr, tab_flags("Textures"))) {
@@ -600,11 +496,12 @@ private:
             ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(display_->texture())), shown, ImVec2(0, 1), ImVec2(1, 0));
         else
             ImGui::Dummy(shown);
-        handle_render_view_mouse(origin, shown);
-        draw_light_gizmo(ImGui::GetWindowDrawList(), origin, shown);
+        if (const auto click = mouse_.handle(view_, origin, shown); click && target_)
+            pick_at(static_cast<int>(click->x * target_->width()), static_cast<int>(click->y * target_->height()));
+        draw_light_gizmo(view_, ImGui::GetWindowDrawList(), origin, shown);
         if (target_) {
             pick_.draw_marker(ImGui::GetWindowDrawList(), origin, shown, target_->width(), target_->height());
-            if (ImGui::IsItemHovered() && !dragging_ && !ImGui::IsMouseDown(ImGuiMouseButton_Right))
+            if (ImGui::IsItemHovered() && !mouse_.dragging() && !ImGui::IsMouseDown(ImGuiMouseButton_Right))
                 PickPanel::draw_hover_readout(*target_, origin, shown);
         }
         if (!reload_error_.empty()) {  // compile errors overlay; the last good effect keeps rendering
@@ -655,12 +552,12 @@ private:
             if (const auto error = session_->reload()) reload_error_ = *error;
             else reload_error_.clear();
         }
-        if (!objects_.empty()) {
-            auto& object = objects_[static_cast<size_t>(selected_object_)];
+        if (!view_.objects.empty()) {
+            auto& object = view_.objects[static_cast<size_t>(view_.selected_object)];
             if (ImGui::BeginCombo("technique", object.technique.c_str())) {
                 for (const auto& t : session_->effect().techniques)
                     if (ImGui::Selectable(t.name.c_str(), t.name == object.technique)) {
-                        for (auto& o : objects_)
+                        for (auto& o : view_.objects)
                             if (&o == &object || ImGui::GetIO().KeyShift) o.technique = t.name;
                     }
                 ImGui::EndCombo();
@@ -689,111 +586,12 @@ private:
         draw_file_access();
         ImGui::Separator();
         std::vector<std::string> shown;  // the techniques on screen
-        for (const auto& o : objects_) {
+        for (const auto& o : view_.objects) {
             const std::string& t = o.technique.empty() ? session_->technique() : o.technique;
             if (o.view == ViewMode::Effect && std::find(shown.begin(), shown.end(), t) == shown.end()) shown.push_back(t);
         }
         if (shown.empty()) shown.push_back(session_->technique());
         draw_parameter_panel(*session_, shown);
-    }
-
-    glm::vec3 beside_the_others(const glm::vec3& scale) const {
-        std::vector<scene::SceneObject> placed;
-        for (const auto& o : objects_) placed.push_back(o.object);
-        return place_beside(placed, scale);
-    }
-
-    // The light as a small sun where it projects into the render view (not when behind the camera).
-    void draw_light_gizmo(ImDrawList* list, ImVec2 origin, ImVec2 shown) const {
-        if (!show_light_ || shown.x <= 0 || shown.y <= 0) return;
-        const glm::mat4 view = math::view_matrix(scene_.camera.pose);
-        const glm::mat4 projection = math::perspective_matrix(scene_.camera.fov_y_degrees, shown.x / shown.y, scene_.camera.near_plane, scene_.camera.far_plane);
-        const glm::vec4 clip = projection * view * glm::vec4(scene_.light.world_position(), 1.0f);
-        if (clip.w <= 0.0f) return;
-        const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-        const ImVec2 at(origin.x + (ndc.x * 0.5f + 0.5f) * shown.x, origin.y + (0.5f - ndc.y * 0.5f) * shown.y);
-        const float r = ImGui::GetFontSize() * 0.45f;
-        const ImU32 colour = selected_ == Target::Light ? IM_COL32(255, 220, 60, 255) : IM_COL32(255, 240, 180, 220);
-        list->AddCircleFilled(at, r, colour);
-        list->AddCircle(at, r, IM_COL32(0, 0, 0, 200), 0, 1.5f);
-        for (int i = 0; i < 8; ++i) {
-            const float angle = static_cast<float>(i) * 0.785398f;
-            const ImVec2 d(std::cos(angle), std::sin(angle));
-            list->AddLine(ImVec2(at.x + d.x * r * 1.4f, at.y + d.y * r * 1.4f), ImVec2(at.x + d.x * r * 2.0f, at.y + d.y * r * 2.0f), colour, 1.5f);
-        }
-        list->AddText(ImVec2(at.x + r * 2.2f, at.y - r), colour, "light");
-    }
-
-    void draw_scene_tab() {
-        ImGui::TextUnformatted("Turn with the left mouse button, move with the right, zoom with the wheel.");
-        const char* targets[] = {"Camera", "Light", "Object"};
-        int selected = static_cast<int>(selected_);
-        if (ImGui::Combo("drag moves", &selected, targets, 3)) selected_ = static_cast<Target>(selected);
-        ImGui::DragFloat("camera distance", &scene_.camera.pose.distance, 0.02f, 0.1f, 100.0f);
-        ImGui::DragFloat2("camera pan", &scene_.camera.pose.pan.x, 0.01f);
-        ImGui::SliderFloat("field of view", &scene_.camera.fov_y_degrees, 5.0f, 120.0f);
-        // The light's world position (drags orbit it: the field follows them, and editing it moves the light there).
-        glm::vec3 light = scene_.light.world_position();
-        if (ImGui::DragFloat3("light position", &light.x, 0.05f))
-            scene_.light.pose.position = glm::inverse(glm::mat3_cast(scene_.light.pose.rotation)) * light;
-        ImGui::Checkbox("show the light in the view", &show_light_);
-        ImGui::ColorEdit4("background", &scene_.background.r, ImGuiColorEditFlags_Float);
-        ImGui::Separator();
-        if (ImGui::Button("Add")) {
-            ObjectState added{scene::SceneObject{}, session_ ? session_->technique() : "", session_ ? ViewMode::Effect : ViewMode::Normals, false};
-            added.object.pose.position = beside_the_others(added.object.scale);
-            objects_.push_back(added);
-            selected_object_ = static_cast<int>(objects_.size()) - 1;
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Duplicate") && !objects_.empty()) {
-            ObjectState copy = objects_[static_cast<size_t>(selected_object_)];
-            copy.object.pose.position = beside_the_others(copy.object.scale);
-            objects_.push_back(copy);
-            selected_object_ = static_cast<int>(objects_.size()) - 1;
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Remove") && objects_.size() > 1) {
-            objects_.erase(objects_.begin() + selected_object_);
-            selected_object_ = std::min(selected_object_, static_cast<int>(objects_.size()) - 1);
-        }
-        for (int i = 0; i < static_cast<int>(objects_.size()); ++i) {
-            ImGui::PushID(i);
-            ImGui::Checkbox("##group", &objects_[static_cast<size_t>(i)].grouped);
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("In the group: turned and moved together");
-            ImGui::SameLine();
-            const std::string label = std::to_string(i) + ": " + objects_[static_cast<size_t>(i)].object.mesh;
-            if (ImGui::Selectable(label.c_str(), i == selected_object_)) {
-                selected_object_ = i;
-                selected_ = Target::Object;
-            }
-            ImGui::PopID();
-        }
-        if (objects_.empty()) return;
-        auto& o = objects_[static_cast<size_t>(selected_object_)];
-        ImGui::Separator();
-        if (ImGui::BeginCombo("mesh", o.object.mesh.c_str())) {
-            for (const auto& name : scene::builtin_mesh_names())
-                if (ImGui::Selectable(name.c_str(), name == o.object.mesh)) o.object.mesh = name;
-            ImGui::EndCombo();
-        }
-        ImGui::InputText("OBJ file", obj_input_, sizeof obj_input_);
-        ImGui::SameLine();
-        if (ImGui::Button("Use")) {
-            try {
-                scene::load_mesh(obj_input_);  // check before the renderer meets it
-                o.object.mesh = obj_input_;
-            } catch (const std::exception& e) {
-                status_ = e.what();
-            }
-        }
-        int view = static_cast<int>(o.view);
-        if (ImGui::Combo("view", &view, kViewNames, 6)) o.view = static_cast<ViewMode>(view);
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("effect, plain rendering (no effect) or a debug view");
-        ImGui::DragFloat3("position", &o.object.pose.position.x, 0.01f);
-        glm::vec3 euler = glm::degrees(glm::eulerAngles(o.object.pose.rotation));
-        if (ImGui::DragFloat3("rotation", &euler.x, 0.5f)) o.object.pose.rotation = glm::quat(glm::radians(euler));
-        ImGui::DragFloat3("scale", &o.object.scale.x, 0.01f, 0.01f, 100.0f);
     }
 
     void draw_view_tab() {
@@ -864,24 +662,24 @@ private:
         } else if (a.verb == "technique") {
             if (!session_) throw UsageError("no effect loaded");
             session_->select_technique(args[0]);  // validates the name
-            for (auto& o : objects_) o.technique = args[0];
+            for (auto& o : view_.objects) o.technique = args[0];
         } else if (a.verb == "view") {
-            for (auto& o : objects_) o.view = parse_view(args[0]);
+            for (auto& o : view_.objects) o.view = parse_view(args[0]);
         } else if (a.verb == "mesh") {
             scene::load_mesh(args[0]);
-            objects_[static_cast<size_t>(selected_object_)].object.mesh = args[0];
+            view_.objects[static_cast<size_t>(view_.selected_object)].object.mesh = args[0];
         } else if (a.verb == "select") {
-            if (args[0] == "camera") selected_ = Target::Camera;
-            else if (args[0] == "light") selected_ = Target::Light;
+            if (args[0] == "camera") view_.selected = Target::Camera;
+            else if (args[0] == "light") view_.selected = Target::Light;
             else if (args[0] == "object") {
-                selected_ = Target::Object;
-                if (args.size() == 2) selected_object_ = std::clamp(std::stoi(args[1]), 0, static_cast<int>(objects_.size()) - 1);
+                view_.selected = Target::Object;
+                if (args.size() == 2) view_.selected_object = std::clamp(std::stoi(args[1]), 0, static_cast<int>(view_.objects.size()) - 1);
             } else throw UsageError("select camera, light or object");
         } else if (a.verb == "rotate") {
-            const Target saved = selected_;
-            selected_ = args[0] == "camera" ? Target::Camera : args[0] == "light" ? Target::Light : Target::Object;
-            rotate_selected(math::rotation_from_euler_degrees({std::stof(args[1]), std::stof(args[2]), std::stof(args[3])}));
-            selected_ = saved;
+            const Target saved = view_.selected;
+            view_.selected = args[0] == "camera" ? Target::Camera : args[0] == "light" ? Target::Light : Target::Object;
+            view_.rotate_selected(math::rotation_from_euler_degrees({std::stof(args[1]), std::stof(args[2]), std::stof(args[3])}));
+            view_.selected = saved;
         } else if (a.verb == "pick") {
             render_scene(*target_);
             if (!pick_at(std::stoi(args[0]), std::stoi(args[1]))) throw UsageError("pick outside the render view");
@@ -965,7 +763,7 @@ private:
             plugin_panel_.wait(session_.get());
             if (!plugin_panel_.result()) throw Error(plugin_panel_.last_plugin() + ": " + plugin_panel_.error());
             const plugin::Result& r = *plugin_panel_.result();
-            for (auto& o : objects_) o.technique = session_->technique();
+            for (auto& o : view_.objects) o.technique = session_->technique();
             std::cout << nlohmann::json{{"plugin", {{"name", plugin_panel_.last_plugin()}, {"parameters", r.parameters},
                                                        {"converged", r.converged}, {"warnings", r.warnings}}}}
                              .dump()
@@ -991,15 +789,10 @@ private:
     RenderSchedule schedule_;
     std::uint64_t coverage_key_ = 0;
     std::vector<double> render_seconds_, ui_frame_seconds_;  // per UI frame: rendering (when any) and the whole frame
-    scene::Scene scene_, initial_scene_;
-    std::vector<ObjectState> objects_;
+    ViewerScene view_;
+    ViewMouse mouse_;
     std::string effect_path_, reload_error_, status_;
-    Target selected_ = Target::Object;
-    int selected_object_ = 0;
-    bool dragging_ = false, drag_moved_ = false;
-    glm::vec2 drag_last_{0.0f};
     glm::ivec2 view_size_{640, 480}, windowed_pos_{0}, windowed_size_{1280, 800}, shot_size_{1920, 1080};
-    bool show_light_ = true;
     bool paused_ = false, vsync_ = true, srgb_display_ = true, show_help_ = false, transparent_shots_ = false;
     int samples_ = 0, frame_number_ = 0, exit_code_ = 0;
     double frame_seconds_ = 0;
@@ -1010,7 +803,7 @@ private:
     std::string requested_tab_;
     std::vector<std::string> pending_window_shots_;
     FileBrowser file_browser_{FXVIEW_SOURCE_EFFECTS_DIR};
-    char preset_input_[512] = "preset.json", obj_input_[512] = "model.obj",
+    char preset_input_[512] = "preset.json",
          shot_input_[512] = "out/screenshot.png", allow_input_[512] = "";
     app::AccessOptions access_ = options_.access;
     std::string requested_effect_path_;  // the last effect asked for, even if it failed to load

@@ -1,0 +1,217 @@
+#include "ui/scene_panel.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "math/arcball.hpp"
+#include "math/transform.hpp"
+#include "scene/shapes.hpp"
+#include "ui/scene_layout.hpp"
+
+namespace fxview::ui {
+
+ViewMode parse_view(const std::string& name) {
+    for (int i = 0; i < 6; ++i)
+        if (name == kViewNames[i]) return static_cast<ViewMode>(i);
+    throw UsageError("unknown view '" + name + "' (effect, plain, normals, uv, camera, light)");
+}
+
+render::DebugView debug_view(ViewMode mode) {
+    switch (mode) {
+        case ViewMode::Normals: return render::DebugView::Normals;
+        case ViewMode::TexCoords: return render::DebugView::TexCoords;
+        case ViewMode::ToCamera: return render::DebugView::ToCamera;
+        case ViewMode::ToLight: return render::DebugView::ToLight;
+        default: return render::DebugView::Plain;
+    }
+}
+
+void ViewerScene::move_selected(const glm::vec3& view_move) {
+    const glm::vec3 world_move = glm::inverse(glm::mat3_cast(scene.camera.pose.rotation)) * view_move;
+    if (selected == Target::Camera) scene.camera.pose.pan -= glm::vec2(view_move);
+    else if (selected == Target::Light) scene.light.pose.position += glm::vec3(glm::mat3_cast(glm::inverse(scene.light.pose.rotation)) * world_move);
+    else if (!objects.empty()) {
+        auto& moved = objects[static_cast<size_t>(selected_object)];
+        for (auto& o : objects)
+            if (&o == &moved || (moved.grouped && o.grouped)) o.object.pose.position += world_move;
+    }
+}
+
+void ViewerScene::rotate_selected(const glm::quat& view_rotation) {
+    if (selected == Target::Camera) {
+        scene.camera.pose.rotation = glm::normalize(view_rotation * scene.camera.pose.rotation);
+    } else if (selected == Target::Light) {
+        scene.light.pose.rotation = math::rotate_in_view(scene.light.pose.rotation, view_rotation, scene.camera.pose.rotation);
+    } else if (!objects.empty()) {
+        auto& selected = objects[static_cast<size_t>(selected_object)];
+        const bool group = selected.grouped;
+        for (auto& o : objects)
+            if (&o == &selected || (group && o.grouped))
+                o.object.pose.rotation = math::rotate_in_view(o.object.pose.rotation, view_rotation, scene.camera.pose.rotation);
+    }
+}
+
+void ViewerScene::reset_selected() {
+    if (selected == Target::Camera) scene.camera = initial.camera;
+    else if (selected == Target::Light) scene.light = initial.light;
+    else if (!objects.empty()) {
+        auto& o = objects[static_cast<size_t>(selected_object)].object;
+        o.pose = {};
+        o.scale = glm::vec3(1.0f);
+    }
+}
+
+void ViewerScene::reset_all() {
+    scene.camera = initial.camera;
+    scene.light = initial.light;
+    for (auto& o : objects) o.object.pose = {}, o.object.scale = glm::vec3(1.0f);
+}
+
+glm::vec3 ViewerScene::beside_the_others(const glm::vec3& scale) const {
+    std::vector<scene::SceneObject> placed;
+    for (const auto& o : objects) placed.push_back(o.object);
+    return place_beside(placed, scale);
+}
+
+void ViewerScene::add_to(StateHash& h) const {
+    // Field by field: the structs hold floats only, but hashing members keeps padding out.
+    const auto& c = scene.camera;
+    h.add(c.pose.rotation.w).add(c.pose.rotation.x).add(c.pose.rotation.y).add(c.pose.rotation.z).add(c.pose.pan.x).add(c.pose.pan.y);
+    h.add(c.pose.distance).add(c.fov_y_degrees).add(c.near_plane).add(c.far_plane);
+    const glm::vec3 light = scene.light.world_position();
+    h.add(light.x).add(light.y).add(light.z).add(scene.light.color.r).add(scene.light.color.g).add(scene.light.color.b).add(scene.light.intensity);
+    h.add(scene.background.r).add(scene.background.g).add(scene.background.b).add(scene.background.a);
+    for (const auto& o : objects) {
+        const auto& p = o.object.pose;
+        h.add(o.object.mesh).add(p.position.x).add(p.position.y).add(p.position.z);
+        h.add(p.rotation.w).add(p.rotation.x).add(p.rotation.y).add(p.rotation.z);
+        h.add(o.object.scale.x).add(o.object.scale.y).add(o.object.scale.z).add(o.technique).add(static_cast<int>(o.view));
+    }
+}
+
+void draw_scene_panel(ViewerScene& view, const std::string& technique, bool has_effect, std::string& status) {
+    ImGui::TextUnformatted("Turn with the left mouse button, move with the right, zoom with the wheel.");
+    const char* targets[] = {"Camera", "Light", "Object"};
+    int selected = static_cast<int>(view.selected);
+    if (ImGui::Combo("drag moves", &selected, targets, 3)) view.selected = static_cast<Target>(selected);
+    ImGui::DragFloat("camera distance", &view.scene.camera.pose.distance, 0.02f, 0.1f, 100.0f);
+    ImGui::DragFloat2("camera pan", &view.scene.camera.pose.pan.x, 0.01f);
+    ImGui::SliderFloat("field of view", &view.scene.camera.fov_y_degrees, 5.0f, 120.0f);
+    // The light's world position (drags orbit it: the field follows them, and editing it moves the light there).
+    glm::vec3 light = view.scene.light.world_position();
+    if (ImGui::DragFloat3("light position", &light.x, 0.05f))
+        view.scene.light.pose.position = glm::inverse(glm::mat3_cast(view.scene.light.pose.rotation)) * light;
+    ImGui::Checkbox("show the light in the view", &view.show_light);
+    ImGui::ColorEdit4("background", &view.scene.background.r, ImGuiColorEditFlags_Float);
+    ImGui::Separator();
+    if (ImGui::Button("Add")) {
+        ObjectState added{scene::SceneObject{}, technique, has_effect ? ViewMode::Effect : ViewMode::Normals, false};
+        added.object.pose.position = view.beside_the_others(added.object.scale);
+        view.objects.push_back(added);
+        view.selected_object = static_cast<int>(view.objects.size()) - 1;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Duplicate") && !view.objects.empty()) {
+        ObjectState copy = view.objects[static_cast<size_t>(view.selected_object)];
+        copy.object.pose.position = view.beside_the_others(copy.object.scale);
+        view.objects.push_back(copy);
+        view.selected_object = static_cast<int>(view.objects.size()) - 1;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Remove") && view.objects.size() > 1) {
+        view.objects.erase(view.objects.begin() + view.selected_object);
+        view.selected_object = std::min(view.selected_object, static_cast<int>(view.objects.size()) - 1);
+    }
+    for (int i = 0; i < static_cast<int>(view.objects.size()); ++i) {
+        ImGui::PushID(i);
+        ImGui::Checkbox("##group", &view.objects[static_cast<size_t>(i)].grouped);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("In the group: turned and moved together");
+        ImGui::SameLine();
+        const std::string label = std::to_string(i) + ": " + view.objects[static_cast<size_t>(i)].object.mesh;
+        if (ImGui::Selectable(label.c_str(), i == view.selected_object)) {
+            view.selected_object = i;
+            view.selected = Target::Object;
+        }
+        ImGui::PopID();
+    }
+    if (view.objects.empty()) return;
+    auto& o = view.objects[static_cast<size_t>(view.selected_object)];
+    ImGui::Separator();
+    if (ImGui::BeginCombo("mesh", o.object.mesh.c_str())) {
+        for (const auto& name : scene::builtin_mesh_names())
+            if (ImGui::Selectable(name.c_str(), name == o.object.mesh)) o.object.mesh = name;
+        ImGui::EndCombo();
+    }
+    static char obj_file[512] = "model.obj";  // the field's text (one panel per process)
+    ImGui::InputText("OBJ file", obj_file, sizeof obj_file);
+    ImGui::SameLine();
+    if (ImGui::Button("Use")) {
+        try {
+            scene::load_mesh(obj_file);  // check before the renderer meets it
+            o.object.mesh = obj_file;
+        } catch (const std::exception& e) {
+            status = e.what();
+        }
+    }
+    int mode = static_cast<int>(o.view);
+    if (ImGui::Combo("view", &mode, kViewNames, 6)) o.view = static_cast<ViewMode>(mode);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("effect, plain rendering (no effect) or a debug view");
+    ImGui::DragFloat3("position", &o.object.pose.position.x, 0.01f);
+    glm::vec3 euler = glm::degrees(glm::eulerAngles(o.object.pose.rotation));
+    if (ImGui::DragFloat3("rotation", &euler.x, 0.5f)) o.object.pose.rotation = glm::quat(glm::radians(euler));
+    ImGui::DragFloat3("scale", &o.object.scale.x, 0.01f, 0.01f, 100.0f);
+}
+
+void draw_light_gizmo(const ViewerScene& view, ImDrawList* list, ImVec2 origin, ImVec2 shown) {
+    if (!view.show_light || shown.x <= 0 || shown.y <= 0) return;
+    const glm::mat4 camera = math::view_matrix(view.scene.camera.pose);
+    const glm::mat4 projection = math::perspective_matrix(view.scene.camera.fov_y_degrees, shown.x / shown.y, view.scene.camera.near_plane, view.scene.camera.far_plane);
+    const glm::vec4 clip = projection * camera * glm::vec4(view.scene.light.world_position(), 1.0f);
+    if (clip.w <= 0.0f) return;
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    const ImVec2 at(origin.x + (ndc.x * 0.5f + 0.5f) * shown.x, origin.y + (0.5f - ndc.y * 0.5f) * shown.y);
+    const float r = ImGui::GetFontSize() * 0.45f;
+    const ImU32 colour = view.selected == Target::Light ? IM_COL32(255, 220, 60, 255) : IM_COL32(255, 240, 180, 220);
+    list->AddCircleFilled(at, r, colour);
+    list->AddCircle(at, r, IM_COL32(0, 0, 0, 200), 0, 1.5f);
+    for (int i = 0; i < 8; ++i) {
+        const float angle = static_cast<float>(i) * 0.785398f;
+        const ImVec2 d(std::cos(angle), std::sin(angle));
+        list->AddLine(ImVec2(at.x + d.x * r * 1.4f, at.y + d.y * r * 1.4f), ImVec2(at.x + d.x * r * 2.0f, at.y + d.y * r * 2.0f), colour, 1.5f);
+    }
+    list->AddText(ImVec2(at.x + r * 2.2f, at.y - r), colour, "light");
+}
+
+std::optional<glm::vec2> ViewMouse::handle(ViewerScene& view, ImVec2 origin, ImVec2 size) {
+    ImGuiIO& io = ImGui::GetIO();
+    if (!ImGui::IsItemHovered() && !dragging_) return std::nullopt;
+    const auto to_ndc = [&](ImVec2 p) { return glm::vec2((p.x - origin.x) / size.x * 2.0f - 1.0f, 1.0f - (p.y - origin.y) / size.y * 2.0f); };
+    std::optional<glm::vec2> click;
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+        dragging_ = true;
+        moved_ = false;
+        last_ = to_ndc(io.MousePos);
+    }
+    if (dragging_ && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+        const glm::vec2 now = to_ndc(io.MousePos);
+        if (glm::length(now - last_) > 1e-4f) {
+            view.rotate_selected(math::arcball_rotation(last_, now));
+            last_ = now;
+            moved_ = true;
+        }
+    }
+    if (dragging_ && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
+        dragging_ = false;
+        if (!moved_) click = glm::vec2((io.MousePos.x - origin.x) / size.x, (io.MousePos.y - origin.y) / size.y);  // a click picks
+    }
+    if (ImGui::IsItemHovered() && ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {  // move in the view plane
+        const float scale = view.scene.camera.pose.distance / size.y * 1.2f;
+        view.move_selected(glm::vec3(io.MouseDelta.x * scale, -io.MouseDelta.y * scale, 0.0f));
+    }
+    if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f)  // camera Z translation = zoom
+        view.scene.camera.pose.distance = std::clamp(view.scene.camera.pose.distance * std::pow(0.9f, io.MouseWheel), 0.1f, 100.0f);
+    return click;
+}
+
+}  // namespace fxview::ui
