@@ -32,6 +32,7 @@ public:
 
     const effect::Effect& effect() const { return *loaded_->effect; }
     effect::ParameterValues& values() { return values_; }
+    const effect::ParameterValues& values() const { return values_; }
     const std::string& technique() const { return technique_; }
     void select_technique(const std::string& name);  // UsageError naming the techniques if unknown
     // Applies changed texture overrides (--set Sampler=file, presets): reloads the textures.

@@ -25,12 +25,14 @@
 #include "render/skybox.hpp"
 #include "scene/shapes.hpp"
 #include "ui/display_pass.hpp"
+#include "ui/effect_state.hpp"
 #include "ui/error_list.hpp"
 #include "ui/file_browser.hpp"
 #include "ui/imgui_layer.hpp"
 #include "ui/pick_panel.hpp"
 #include "ui/render_schedule.hpp"
 #include "ui/scene_panel.hpp"
+#include "ui/screenshot.hpp"
 #include "ui/texture_panel.hpp"
 #include "ui/plugin_panel.hpp"
 #include "ui/parameter_panel.hpp"
@@ -39,22 +41,6 @@ namespace fxview::ui {
 namespace {
 
 namespace fs = std::filesystem;
-
-void write_window_png(const std::string& path, int width, int height) {
-    std::vector<unsigned char> bytes(static_cast<size_t>(width) * height * 4);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    glReadBuffer(GL_BACK);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
-    image::FloatImage shot(width, height, 4);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x)
-            for (int c = 0; c < 4; ++c)  // the window already holds display values: store them unchanged
-                shot.pixel(x, height - 1 - y)[c] = c == 3 ? 1.0f : bytes[(static_cast<size_t>(y) * width + x) * 4 + c] / 255.0f;
-    const auto parent = fs::path(path).parent_path();
-    if (!parent.empty()) fs::create_directories(parent);
-    image::write_image(path, shot, image::Encoding::Linear);
-}
 
 class Viewer {
 public:
@@ -76,8 +62,8 @@ public:
         view_.scene = options.scene;
         view_.initial = options.scene;
         for (const auto& object : options.scene.objects) view_.objects.push_back({object, options.technique, ViewMode::Effect, false});
-        if (!options.effect_path.empty()) load_effect(options.effect_path, options.technique, options.sets, options.preset);
-        if (!session_)
+        if (!options.effect_path.empty() && effect_.open(options.effect_path, options.technique, options.sets, options.preset)) on_effect_opened();
+        if (!session())
             for (auto& o : view_.objects) o.view = ViewMode::Normals;
         if (!options.debug_view.empty())
             for (auto& o : view_.objects) o.view = parse_view(options.debug_view);
@@ -86,24 +72,14 @@ public:
     }
 
     int run() {
-        auto last_poll = std::chrono::steady_clock::now();
-        auto last_frame = last_poll;
+        auto last_frame = std::chrono::steady_clock::now();
         while (!glfwWindowShouldClose(window_)) {
             glfwPollEvents();
             const auto now = std::chrono::steady_clock::now();
             frame_seconds_ = std::chrono::duration<double>(now - last_frame).count();
             last_frame = now;
-            if (now - last_poll > std::chrono::milliseconds(500)) {  // hot reload
-                last_poll = now;
-                if (session_ && session_->files_changed()) {
-                    const auto error = session_->reload();
-                    reload_error_ = error ? *error : std::string();
-                } else if (!session_ && failed_file_changed()) {
-                    // An effect that failed at start is watched too: saving the fix opens it.
-                    load_effect(requested_effect_path_, options_.technique, options_.sets, options_.preset);
-                }
-            }
-            plugin_panel_.update(session_.get());  // a running plugin's live parameters; its result when done
+            if (effect_.poll()) on_effect_opened();  // hot reload; a failed start retried when its file is saved
+            plugin_panel_.update(session());  // a running plugin's live parameters; its result when done
             if (target_) run_script_step();  // actions need the render view, made by the first frame
             frame();
             ++frame_number_;
@@ -133,65 +109,28 @@ public:
     }
 
 private:
-    // Whether the effect that failed to load (no session yet) was written since the last attempt.
-    bool failed_file_changed() {
-        if (requested_effect_path_.empty()) return false;
-        std::error_code error;
-        const auto written = std::filesystem::last_write_time(requested_effect_path_, error);
-        if (error || written == failed_write_time_) return false;
-        failed_write_time_ = written;
-        return true;
-    }
-
-    void load_effect(const std::string& path, const std::string& technique, const std::vector<std::string>& sets,
-                     const std::string& preset) {
-        requested_effect_path_ = path;
-        std::error_code time_error;
-        failed_write_time_ = std::filesystem::last_write_time(path, time_error);  // the version this attempt reads
-        try {
-            app::EffectOptions effect_options;
-            effect_options.access = access_;
-            effect_options.path = path;
-            effect_options.technique = technique;
-            effect_options.sets = sets;
-            effect_options.preset = preset;
-            session_ = app::open_effect_session(effect_options);
-            effect_path_ = path;
-            reload_error_.clear();
-            for (auto& o : view_.objects) {
-                o.technique = session_->technique();
-                if (o.view != ViewMode::Effect && o.view != ViewMode::Plain) o.view = ViewMode::Effect;
-            }
-        } catch (const std::exception& error) {
-            reload_error_ = error.what();  // the last good effect (if any) stays
+    // A newly opened effect: every object shows it, with its technique.
+    void on_effect_opened() {
+        for (auto& o : view_.objects) {
+            o.technique = session()->technique();
+            if (o.view != ViewMode::Effect && o.view != ViewMode::Plain) o.view = ViewMode::Effect;
         }
     }
 
-    // Lets effects read below `folder` too (the viewer's counterpart of --allow-path) and loads the
-    // effect again with it: a running effect keeps the user's values, one refused at start opens now.
-    void allow_folder(const std::string& folder) {
-        app::AccessOptions widened = access_;
-        widened.allow_paths.push_back(folder);
-        effect::LoadOptions load_options = app::effect_load_options(widened);  // UsageError for a missing folder
-        access_ = std::move(widened);
-        if (session_) {
-            session_->set_load_options(std::move(load_options));
-            const auto error = session_->reload();
-            reload_error_ = error ? *error : "";
-        } else if (!requested_effect_path_.empty()) {
-            load_effect(requested_effect_path_, options_.technique, options_.sets, options_.preset);
-        }
-    }
+    render::EffectSession* session() { return effect_.session(); }
+    const render::EffectSession* session() const { return effect_.session(); }
 
     void draw_file_access() {
         if (!ImGui::CollapsingHeader("File access")) return;
         ImGui::TextWrapped("Effects read includes, textures and data only from their own folder and these folders:");
-        for (const auto& folder : app::effect_load_options(access_).access.folders()) ImGui::BulletText("%s", folder.c_str());
+        for (const auto& folder : effect_.allowed_folders()) ImGui::BulletText("%s", folder.c_str());
         ImGui::InputText("##allow", allow_input_, sizeof allow_input_);
         ImGui::SameLine();
         if (ImGui::Button("Allow folder")) {
             try {
-                allow_folder(allow_input_);
+                const bool had_effect = session() != nullptr;
+                effect_.allow_folder(allow_input_);
+                if (!had_effect && session()) on_effect_opened();
             } catch (const std::exception& error) {
                 status_ = error.what();
             }
@@ -211,16 +150,16 @@ private:
             scene::Scene single = view_.scene;
             single.objects = {o.object};
             try {
-                if (o.view == ViewMode::Effect && session_) {
-                    const std::string previous = session_->technique();
-                    if (!o.technique.empty() && o.technique != previous) session_->select_technique(o.technique);
-                    session_->render(single, target, {static_cast<float>(glfwGetTime()), frame_number_}, false);
-                    if (session_->technique() != previous) session_->select_technique(previous);
+                if (o.view == ViewMode::Effect && session()) {
+                    const std::string previous = session()->technique();
+                    if (!o.technique.empty() && o.technique != previous) session()->select_technique(o.technique);
+                    session()->render(single, target, {static_cast<float>(glfwGetTime()), frame_number_}, false);
+                    if (session()->technique() != previous) session()->select_technique(previous);
                 } else {
                     debug_->render(single, debug_view(o.view == ViewMode::Effect ? ViewMode::Plain : o.view), target, false);
                 }
             } catch (const std::exception& error) {
-                reload_error_ = error.what();
+                effect_.set_error(error.what());
             }
         }
         if (sky) skybox_->draw(sky->texture.get(), view_.scene.camera, target);
@@ -228,8 +167,8 @@ private:
     }
 
     const render::GpuTexture* skybox_texture() const {
-        if (!session_ || skybox_name_.empty()) return nullptr;
-        const render::GpuTexture* texture = session_->resources().find(skybox_name_);
+        if (!session() || skybox_name_.empty()) return nullptr;
+        const render::GpuTexture* texture = session()->resources().find(skybox_name_);
         return texture && texture->type == texture::TextureType::Cube ? texture : nullptr;
     }
 
@@ -239,14 +178,14 @@ private:
         StateHash h;
         h.add(width).add(height).add(samples_).add(srgb_display_).add(skybox_name_);
         view_.add_to(h);
-        if (session_) {
-            h.add(reinterpret_cast<std::uintptr_t>(&session_->effect())).add(reinterpret_cast<std::uintptr_t>(&session_->resources()));
-            h.add(session_->technique());
-            for (const auto& [name, value] : session_->values().numbers) {
+        if (session()) {
+            h.add(reinterpret_cast<std::uintptr_t>(&session()->effect())).add(reinterpret_cast<std::uintptr_t>(&session()->resources()));
+            h.add(session()->technique());
+            for (const auto& [name, value] : session()->values().numbers) {
                 h.add(name);
                 for (const double x : value) h.add(x);
             }
-            for (const auto& [name, file] : session_->values().textures) h.add(name).add(file);
+            for (const auto& [name, file] : session()->values().textures) h.add(name).add(file);
         }
         return h.value();
     }
@@ -279,16 +218,16 @@ private:
     }
 
     bool picture_animated() const {
-        if (!session_) return false;
+        if (!session()) return false;
         for (const auto& o : view_.objects)
-            if (o.view == ViewMode::Effect && session_->animated(o.technique.empty() ? session_->technique() : o.technique)) return true;
+            if (o.view == ViewMode::Effect && session()->animated(o.technique.empty() ? session()->technique() : o.technique)) return true;
         return false;
     }
 
     bool picture_progressive() const {
-        if (!session_) return true;
+        if (!session()) return true;
         for (const auto& o : view_.objects)
-            if (o.view == ViewMode::Effect && session_->renders_to_textures(o.technique.empty() ? session_->technique() : o.technique)) return false;
+            if (o.view == ViewMode::Effect && session()->renders_to_textures(o.technique.empty() ? session()->technique() : o.technique)) return false;
         return true;
     }
 
@@ -338,27 +277,14 @@ private:
         context_->swap_buffers();
     }
 
-    void write_render(const std::string& path) {
-        const auto parent = fs::path(path).parent_path();
-        if (!parent.empty()) fs::create_directories(parent);
-        image::write_image(path, target_->read_color(0), srgb_display_ ? image::Encoding::Srgb : image::Encoding::Linear);
-    }
+    // The render view's picture as rendered (linear values, alpha kept).
+    void write_render(const std::string& path) { write_picture(path, target_->read_color(0), srgb_display_, true); }
 
-    // What the view shows, at any size: uncovered pixels over the view's backdrop (opaque), unless the
-    // user asked for a transparent background.
+    // What the view shows, at any size (screenshot.hpp).
     void screenshot_at(const std::string& path, int width, int height) {
         gl::RenderTarget shot({width, height, 1, samples_});
         render_scene(shot);
-        const auto parent = fs::path(path).parent_path();
-        if (!parent.empty()) fs::create_directories(parent);
-        image::FloatImage image = shot.read_color(0);
-        if (!transparent_shots_)
-            for (size_t i = 0; i + 3 < image.data.size(); i += 4) {
-                const float alpha = std::clamp(image.data[i + 3], 0.0f, 1.0f);
-                for (size_t c = 0; c < 3; ++c) image.data[i + c] = kDisplayBackdrop + (image.data[i + c] - kDisplayBackdrop) * alpha;
-                image.data[i + 3] = 1.0f;
-            }
-        image::write_image(path, image, srgb_display_ ? image::Encoding::Srgb : image::Encoding::Linear);
+        write_picture(path, shot.read_color(0), srgb_display_, transparent_shots_);
         status_ = "saved " + path;
     }
 
@@ -453,11 +379,11 @@ private:
                 ImGui::EndTabItem();
             }
             if (ImGui::BeginTabItem("Scene", nullptr, tab_flags("Scene"))) {
-                draw_scene_panel(view_, session_ ? session_->technique() : "", session_ != nullptr, status_);
+                draw_scene_panel(view_, session() ? session()->technique() : "", session() != nullptr, status_);
                 ImGui::EndTabItem();
             }
             if (ImGui::BeginTabItem("Textures", nullptr, tab_flags("Textures"))) {
-                if (session_) texture_panel_->draw(*session_, skybox_name_, status_);
+                if (session()) texture_panel_->draw(*session(), skybox_name_, status_);
                 else ImGui::TextUnformatted("No effect loaded.");
                 ImGui::EndTabItem();
             }
@@ -470,7 +396,7 @@ private:
                 ImGui::EndTabItem();
             }
             if (ImGui::BeginTabItem("Plugins", nullptr, tab_flags("Plugins"))) {
-                plugin_panel_.draw(session_.get());
+                plugin_panel_.draw(session());
                 ImGui::EndTabItem();
             }
             ImGui::EndTabBar();
@@ -504,10 +430,10 @@ private:
             if (ImGui::IsItemHovered() && !mouse_.dragging() && !ImGui::IsMouseDown(ImGuiMouseButton_Right))
                 PickPanel::draw_hover_readout(*target_, origin, shown);
         }
-        if (!reload_error_.empty()) {  // compile errors overlay; the last good effect keeps rendering
+        if (!effect_.error().empty()) {  // compile errors overlay; the last good effect keeps rendering
             ImGui::SetCursorScreenPos(ImVec2(origin.x + 8, origin.y + 8));
             ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-            ImGui::TextWrapped("%s", reload_error_.c_str());
+            ImGui::TextWrapped("%s", effect_.error().c_str());
             ImGui::PopStyleColor();
         }
         ImGui::End();
@@ -516,8 +442,8 @@ private:
     }
 
     void draw_effect_tab() {
-        ImGui::TextWrapped("Effect: %s", effect_path_.empty() ? "(none: built-in views)" : effect_path_.c_str());
-        const std::vector<ErrorLocation> errors = error_locations(reload_error_);
+        ImGui::TextWrapped("Effect: %s", effect_.path().empty() ? "(none: built-in views)" : effect_.path().c_str());
+        const std::vector<ErrorLocation> errors = error_locations(effect_.error());
         if (!errors.empty() && ImGui::CollapsingHeader(("Errors (" + std::to_string(errors.size()) + "): click to open in your editor").c_str(),
                                                        ImGuiTreeNodeFlags_DefaultOpen)) {
             for (size_t i = 0; i < errors.size(); ++i) {
@@ -532,30 +458,29 @@ private:
         if (ImGui::Button("Open...")) ImGui::OpenPopup("Open effect");
         if (ImGui::BeginPopup("Open effect")) {
             if (const auto file = file_browser_.draw()) {
-                load_effect(*file, "", {}, "");
+                if (effect_.open(*file)) on_effect_opened();
                 ImGui::CloseCurrentPopup();
             }
             ImGui::EndPopup();
         }
-        if (!session_) {
-            if (!requested_effect_path_.empty()) {
+        if (!session()) {
+            if (!effect_.requested_path().empty()) {
                 // The file is watched; Reload also retries after fixing an include or a texture.
-                if (ImGui::Button("Reload")) load_effect(requested_effect_path_, options_.technique, options_.sets, options_.preset);
+                if (ImGui::Button("Reload") && effect_.retry()) on_effect_opened();
                 ImGui::SameLine();
-                ImGui::TextDisabled("%s failed to load (watched: saving it retries)", requested_effect_path_.c_str());
+                ImGui::TextDisabled("%s failed to load (watched: saving it retries)", effect_.requested_path().c_str());
             }
             draw_file_access();
             return;
         }
         ImGui::SameLine();
         if (ImGui::Button("Reload")) {
-            if (const auto error = session_->reload()) reload_error_ = *error;
-            else reload_error_.clear();
+            effect_.reload();
         }
         if (!view_.objects.empty()) {
             auto& object = view_.objects[static_cast<size_t>(view_.selected_object)];
             if (ImGui::BeginCombo("technique", object.technique.c_str())) {
-                for (const auto& t : session_->effect().techniques)
+                for (const auto& t : session()->effect().techniques)
                     if (ImGui::Selectable(t.name.c_str(), t.name == object.technique)) {
                         for (auto& o : view_.objects)
                             if (&o == &object || ImGui::GetIO().KeyShift) o.technique = t.name;
@@ -567,7 +492,7 @@ private:
         ImGui::InputText("preset", preset_input_, sizeof preset_input_);
         if (ImGui::Button("Save preset")) {
             try {
-                effect::save_preset(preset_input_, session_->effect(), session_->technique(), session_->values());
+                effect::save_preset(preset_input_, session()->effect(), session()->technique(), session()->values());
                 status_ = std::string("saved ") + preset_input_;
             } catch (const std::exception& e) {
                 status_ = e.what();
@@ -576,8 +501,8 @@ private:
         ImGui::SameLine();
         if (ImGui::Button("Load preset")) {
             try {
-                effect::load_preset(preset_input_, session_->effect(), session_->values());
-                session_->reload_textures();
+                effect::load_preset(preset_input_, session()->effect(), session()->values());
+                session()->reload_textures();
                 status_ = std::string("loaded ") + preset_input_;
             } catch (const std::exception& e) {
                 status_ = e.what();
@@ -587,11 +512,11 @@ private:
         ImGui::Separator();
         std::vector<std::string> shown;  // the techniques on screen
         for (const auto& o : view_.objects) {
-            const std::string& t = o.technique.empty() ? session_->technique() : o.technique;
+            const std::string& t = o.technique.empty() ? session()->technique() : o.technique;
             if (o.view == ViewMode::Effect && std::find(shown.begin(), shown.end(), t) == shown.end()) shown.push_back(t);
         }
-        if (shown.empty()) shown.push_back(session_->technique());
-        draw_parameter_panel(*session_, shown);
+        if (shown.empty()) shown.push_back(session()->technique());
+        draw_parameter_panel(*session(), shown);
     }
 
     void draw_view_tab() {
@@ -653,15 +578,15 @@ private:
     void perform(const ScriptAction& a) {
         const auto& args = a.arguments;
         if (a.verb == "set") {
-            if (!session_) throw UsageError("no effect loaded");
-            effect::ParameterValues edited = session_->values();
-            effect::set_value_from_text(session_->effect(), edited, args[0] + "=" + args[1]);
-            effect::check_constraints(session_->effect(), edited);
-            session_->values() = std::move(edited);
-            if (!session_->values().textures.empty()) session_->reload_textures();
+            if (!session()) throw UsageError("no effect loaded");
+            effect::ParameterValues edited = session()->values();
+            effect::set_value_from_text(session()->effect(), edited, args[0] + "=" + args[1]);
+            effect::check_constraints(session()->effect(), edited);
+            session()->values() = std::move(edited);
+            if (!session()->values().textures.empty()) session()->reload_textures();
         } else if (a.verb == "technique") {
-            if (!session_) throw UsageError("no effect loaded");
-            session_->select_technique(args[0]);  // validates the name
+            if (!session()) throw UsageError("no effect loaded");
+            session()->select_technique(args[0]);  // validates the name
             for (auto& o : view_.objects) o.technique = args[0];
         } else if (a.verb == "view") {
             for (auto& o : view_.objects) o.view = parse_view(args[0]);
@@ -706,7 +631,7 @@ private:
             requested_tab_ = args[0];
             wait_frames_ = 1;
         } else if (a.verb == "inspect-texture") {
-            if (!session_ || !session_->resources().find(args[0])) throw UsageError("inspect-texture: the effect has no texture '" + args[0] + "'");
+            if (!session() || !session()->resources().find(args[0])) throw UsageError("inspect-texture: the effect has no texture '" + args[0] + "'");
             const char* channels[] = {"rgba", "r", "g", "b", "a"};
             int channel = 0;
             if (args.size() > 1) {
@@ -717,7 +642,7 @@ private:
             requested_tab_ = "Textures";
             wait_frames_ = 1;
         } else if (a.verb == "open-error") {
-            const std::vector<ErrorLocation> errors = error_locations(reload_error_);
+            const std::vector<ErrorLocation> errors = error_locations(effect_.error());
             const int n = std::stoi(args[0]);
             if (n < 1 || n > static_cast<int>(errors.size()))
                 throw UsageError("open-error " + args[0] + ": there are " + std::to_string(errors.size()) + " error places");
@@ -725,7 +650,7 @@ private:
         } else if (a.verb == "wait-effect") {
             // Waits, frame by frame, until an effect is loaded (e.g. a failed one was fixed on disk).
             const double limit = std::stod(args[0]);
-            if (!session_) {
+            if (!session()) {
                 if (wait_started_ == std::chrono::steady_clock::time_point{}) wait_started_ = std::chrono::steady_clock::now();
                 if (std::chrono::duration<double>(std::chrono::steady_clock::now() - wait_started_).count() < limit) {
                     --script_position_;
@@ -738,7 +663,7 @@ private:
             wait_started_ = {};
         } else if (a.verb == "plugin-start") {
             // Starts a plugin and goes on: the window keeps drawing while it runs (plugin-wait).
-            if (!plugin_panel_.start(session_.get(), args[0])) throw UsageError(plugin_panel_.error());
+            if (!plugin_panel_.start(session(), args[0])) throw UsageError(plugin_panel_.error());
             plugin_start_frame_ = frame_number_;
             plugin_start_time_ = std::chrono::steady_clock::now();
         } else if (a.verb == "plugin-wait") {
@@ -759,17 +684,19 @@ private:
             // plugin NAME: runs the effect's plugin as the Run button does, and waits for it.
             // fit FILE: the effect's first plugin on that data file (the Data file field).
             const std::string name = a.verb == "plugin" ? args[0] : "", file = a.verb == "fit" ? args[0] : "";
-            if (!plugin_panel_.start(session_.get(), name, file)) throw UsageError(plugin_panel_.error());
-            plugin_panel_.wait(session_.get());
+            if (!plugin_panel_.start(session(), name, file)) throw UsageError(plugin_panel_.error());
+            plugin_panel_.wait(session());
             if (!plugin_panel_.result()) throw Error(plugin_panel_.last_plugin() + ": " + plugin_panel_.error());
             const plugin::Result& r = *plugin_panel_.result();
-            for (auto& o : view_.objects) o.technique = session_->technique();
+            for (auto& o : view_.objects) o.technique = session()->technique();
             std::cout << nlohmann::json{{"plugin", {{"name", plugin_panel_.last_plugin()}, {"parameters", r.parameters},
                                                        {"converged", r.converged}, {"warnings", r.warnings}}}}
                              .dump()
                       << std::endl;
         } else if (a.verb == "allow-path") {
-            allow_folder(args[0]);
+            const bool had_effect = session() != nullptr;
+            effect_.allow_folder(args[0]);
+            if (!had_effect && session()) on_effect_opened();
         } else if (a.verb == "frames") {
             wait_frames_ = std::max(0, std::stoi(args[0]));
         }
@@ -784,14 +711,13 @@ private:
     std::unique_ptr<render::Skybox> skybox_;
     std::string skybox_name_;
     std::unique_ptr<TexturePanel> texture_panel_;
-    std::unique_ptr<render::EffectSession> session_;
     std::unique_ptr<gl::RenderTarget> target_;
     RenderSchedule schedule_;
     std::uint64_t coverage_key_ = 0;
     std::vector<double> render_seconds_, ui_frame_seconds_;  // per UI frame: rendering (when any) and the whole frame
     ViewerScene view_;
     ViewMouse mouse_;
-    std::string effect_path_, reload_error_, status_;
+    std::string status_;
     glm::ivec2 view_size_{640, 480}, windowed_pos_{0}, windowed_size_{1280, 800}, shot_size_{1920, 1080};
     bool paused_ = false, vsync_ = true, srgb_display_ = true, show_help_ = false, transparent_shots_ = false;
     int samples_ = 0, frame_number_ = 0, exit_code_ = 0;
@@ -805,9 +731,7 @@ private:
     FileBrowser file_browser_{FXVIEW_SOURCE_EFFECTS_DIR};
     char preset_input_[512] = "preset.json",
          shot_input_[512] = "out/screenshot.png", allow_input_[512] = "";
-    app::AccessOptions access_ = options_.access;
-    std::string requested_effect_path_;  // the last effect asked for, even if it failed to load
-    std::filesystem::file_time_type failed_write_time_{};  // its modification time at the last attempt
+    EffectState effect_{options_.access};  // destroyed before the context (declared after it)
     std::vector<ScriptAction> script_;
     size_t script_position_ = 0;
     int wait_frames_ = 0;
