@@ -172,5 +172,5 @@ GLSLShader GratingFS {
     }
 }
 
-technique Thesis { pass p0 { VertexShader = StandardVS; FragmentShader = ThesisFS; } }
+technique Thesis < string UIName = "Simple model (hard cut)"; > { pass p0 { VertexShader = StandardVS; FragmentShader = ThesisFS; } }
 technique Grating < bool Default = true; > { pass p0 { VertexShader = StandardVS; FragmentShader = GratingFS; } }

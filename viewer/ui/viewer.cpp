@@ -479,9 +479,16 @@ private:
         }
         if (!view_.objects.empty()) {
             auto& object = view_.objects[static_cast<size_t>(view_.selected_object)];
-            if (ImGui::BeginCombo("technique", object.technique.c_str())) {
+            // A technique's UIName annotation, where it has one, is what the user reads.
+            const auto shown_name = [](const effect::Technique& t) {
+                for (const auto& a : t.annotations)
+                    if (a.name == "UIName" && a.value.is_string) return a.value.text + " (" + t.name + ")";
+                return t.name;
+            };
+            const effect::Technique* current = session()->effect().find_technique(object.technique);
+            if (ImGui::BeginCombo("technique", current ? shown_name(*current).c_str() : object.technique.c_str())) {
                 for (const auto& t : session()->effect().techniques)
-                    if (ImGui::Selectable(t.name.c_str(), t.name == object.technique)) {
+                    if (ImGui::Selectable(shown_name(t).c_str(), t.name == object.technique)) {
                         for (auto& o : view_.objects)
                             if (&o == &object || ImGui::GetIO().KeyShift) o.technique = t.name;
                     }
