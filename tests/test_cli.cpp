@@ -449,11 +449,32 @@ TEST_CASE("fit --model: unknown models, the thesis solver on other models and an
     REQUIRE(run("brdf-grid --model ggx --samples 4 7 7 --out " + data).exit_code == 0);
     CHECK(run("fit " + data + " --model nonsense").exit_code == 2);
     CHECK(run("fit " + data + " --model ggx --solver thesis").exit_code == 2);
+    CHECK(run("fit " + data + " --model all --solver thesis").exit_code == 2);  // not silently one model
     CHECK(run("fit " + data + " --clear-coat 0.5").exit_code == 2);
     REQUIRE(run("brdf-grid --model ggx --merl-out --out " + merl).exit_code == 0);
     const Result aniso = run("fit " + merl + " --model ashikhmin-aniso");
     CHECK(aniso.exit_code == 2);
     CHECK(aniso.err.find("isotropic") != std::string::npos);
+}
+
+TEST_CASE("spectra film-error: the Fourier series of a film approaches the 1 nm integral as the order grows") {
+    const Result r = run("spectra film-error --thickness-step 250 --angle-step 40 --orders 1,3,16 --json");
+    REQUIRE(r.exit_code == 0);
+    const auto rows = nlohmann::json::parse(r.out)["orders"];
+    REQUIRE(rows.size() == 6);  // 3 orders x dielectric, metal
+    for (size_t kind = 0; kind < 2; ++kind) {
+        const std::string band = "d <= 1000 nm, angle <= 80";
+        const double m1 = rows[kind * 3]["d <= 1000 nm, angle <= 80"]["mean"], m3 = rows[kind * 3 + 1][band]["mean"],
+                     m16 = rows[kind * 3 + 2][band]["mean"];
+        CAPTURE(kind);
+        CHECK(m1 > m3);
+        CHECK(m3 > m16);
+        // The series is exact in the limit (tests/test_optics.cpp): at order 16 only slowly converging
+        // strong reflections (near grazing, |x| -> 1) are left, on average far below one ΔE unit.
+        CHECK(m16 < 0.05);
+    }
+    CHECK(run("spectra film-error --orders 99").exit_code == 2);
+    CHECK(run("spectra film-error --light NoSuchLight").exit_code == 2);
 }
 
 TEST_CASE("fit and brdf-grid reject bad input: exit 2 for arguments, 1 naming file and line for data") {

@@ -9,6 +9,8 @@
 #include <numbers>
 #include <vector>
 
+#include "core/error.hpp"
+#include "optics/film_series.hpp"
 #include "optics/grating.hpp"
 #include "optics/thesis_models.hpp"
 #include "optics/thin_film.hpp"
@@ -232,4 +234,29 @@ TEST_CASE("the thesis' CD intensity (eq. 72) with its spacing rule and hard thre
     const auto kept = thesis::cd_intensity(1600.0, 1.0, 0.9, 0.6, 400.0, 0.5);
     CHECK(kept.spacing_nm == 4800.0);
     CHECK(kept.intensity == doctest::Approx(0.6).epsilon(1e-9));
+}
+
+TEST_CASE("the film's cosine series (Belcour-Barla) sums to the transfer-matrix reflectance") {
+    // At high order the truncation is below 1e-12 (|x|^60); the transfer matrix is independent code
+    // (characteristic matrices), so agreement to 1e-10 checks the coefficients and the phase sign.
+    struct Case {
+        double n1;
+        Complex n2;
+        double cos0, thickness;
+    };
+    for (const Case& c : {Case{1.33, {1.0, 0.0}, 1.0, 300.0}, Case{1.33, {1.5, 0.0}, 0.6, 550.0}, Case{2.4, {1.5, 0.0}, 0.2, 120.0},
+                          Case{1.5, {0.27, 2.9}, 0.9, 400.0}, Case{1.8, {1.2, 7.0}, 0.3, 900.0}, Case{1.1, {4.0, 0.03}, 0.05, 1500.0}}) {
+        for (const double wavelength : {380.0, 550.0, 700.0})
+            for (const auto polarisation : {Polarisation::S, Polarisation::P}) {
+                CAPTURE(c.n1);
+                CAPTURE(c.n2.imag());
+                CAPTURE(wavelength);
+                const FilmSeries series = film_series(1.0, c.n1, c.n2, c.cos0, polarisation, 60);
+                const double delta = 4.0 * std::numbers::pi * c.n1 * c.thickness * series.cos_film / wavelength;
+                const Stack stack{1.0, {{c.n1, c.thickness}}, c.n2};
+                const double exact = transfer_matrix(stack, wavelength, c.cos0, polarisation).reflectance;
+                CHECK(evaluate(series, delta) == doctest::Approx(exact).epsilon(1e-10));
+            }
+    }
+    CHECK_THROWS_AS(film_series(1.5, 1.0, {1.5, 0.0}, 0.2, Polarisation::S, 4), fxview::Error);  // evanescent film
 }

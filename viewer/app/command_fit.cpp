@@ -88,14 +88,18 @@ void write_preset(const fit::FitResult& r, const std::string& path) {
 nlohmann::json result_json(const fit::FitResult& r) {
     nlohmann::json parameters = nlohmann::json::object();
     for (const fit::FittedParameter& p : r.parameters) parameters[p.name] = p.values.size() == 1 ? nlohmann::json(p.values[0]) : nlohmann::json(p.values);
-    return {{"model", r.model}, {"title", r.title}, {"technique", r.technique}, {"parameters", parameters},
-            {"samples_used", r.samples_used}, {"samples_masked", r.samples_masked}, {"accepted_steps", r.stage1.accepted},
-            {"ns", r.ns}, {"cd", r.cd}, {"cs", r.cs}, {"mono_cd", r.mono_cd}, {"mono_cs", r.mono_cs},
-            {"rs", r.rs}, {"rd_renderer", r.rd_renderer}, {"cs_renderer", r.cs_renderer},
-            {"error_mono", r.error_mono}, {"error_rgb", r.error_rgb}, {"weighted_rms", r.weighted_rms},
-            {"solver", r.solver}, {"stop_reason", r.stop_reason}, {"converged", r.converged},
-            {"weighted_cost", r.cost}, {"optimum_cost", r.optimum_cost}, {"warnings", r.warnings},
-            {"residual", r.residual}, {"loss", r.loss}, {"loss_scale", r.loss_scale_used}, {"reweightings", r.reweightings}};
+    nlohmann::json out{{"model", r.model}, {"title", r.title}, {"technique", r.technique}, {"parameters", parameters},
+                       {"samples_used", r.samples_used}, {"samples_masked", r.samples_masked},
+                       {"error_rgb", r.error_rgb}, {"weighted_rms", r.weighted_rms},
+                       {"solver", r.solver}, {"stop_reason", r.stop_reason}, {"converged", r.converged},
+                       {"weighted_cost", r.cost}, {"warnings", r.warnings},
+                       {"residual", r.residual}, {"loss", r.loss}, {"loss_scale", r.loss_scale_used}, {"reweightings", r.reweightings}};
+    // The thesis' model keeps its own names and renderer form (eq. 4.23/4.24); the thesis solver its stage 1.
+    if (r.model == fit::kDefaultModel)
+        out.update({{"ns", r.ns}, {"cd", r.cd}, {"cs", r.cs}, {"mono_cd", r.mono_cd}, {"mono_cs", r.mono_cs}, {"error_mono", r.error_mono},
+                    {"rs", r.rs}, {"rd_renderer", r.rd_renderer}, {"cs_renderer", r.cs_renderer}});
+    if (r.solver == "thesis") out.update({{"accepted_steps", r.stage1.accepted}, {"optimum_cost", r.optimum_cost}});
+    return out;
 }
 
 std::string parameters_text(const fit::FitResult& r) {
@@ -118,8 +122,7 @@ std::function<std::array<double, 3>(const glm::dvec3&, const glm::dvec3&)> analy
         if (eq == std::string::npos) throw UsageError("--param: expected KEY=VALUE, got '" + p + "'");
         const std::string text = p.substr(eq + 1);
         const auto count = static_cast<size_t>(std::count(text.begin(), text.end(), ',') + 1);
-        const auto floats = parse_floats("--param " + p.substr(0, eq), text, count);
-        values[p.substr(0, eq)] = std::vector<double>(floats.begin(), floats.end());
+        values[p.substr(0, eq)] = parse_doubles("--param " + p.substr(0, eq), text, count);
     }
     std::vector<std::string> used;
     // Each value must lie in the model's domain: outside it the model is not a BRDF (a negative
@@ -238,6 +241,8 @@ CommandRunner add_fit_command(CLI::App& app) {
         o->fit.residual = o->residual == "cbrt" ? fit::Residual::CubeRoot : o->residual == "log" ? fit::Residual::Log : fit::Residual::Linear;
         o->fit.loss = o->loss == "huber" ? fit::Loss::Huber : o->loss == "cauchy" ? fit::Loss::Cauchy : fit::Loss::Squared;
         const bool all = o->model == "all";
+        if (all && o->fit.solver == fit::Solver::Thesis)
+            throw UsageError("fit: --model all fits every model with the global solver; the thesis solver fits ashikhmin-fit only");
         o->fit.model = all ? fit::kDefaultModel : o->model;
         fit::validate(o->fit);  // before reading the data: a bad start is a usage error (exit 2)
         const fit::Measurement measurement = fit::read_measurement_for_fit(o->data);
@@ -277,7 +282,7 @@ CommandRunner add_fit_command(CLI::App& app) {
             nlohmann::json out = result_json(r);
             out["data"] = o->data;
             out["limit_deg"] = o->fit.limit_deg;
-            out["iterations"] = o->fit.iterations;
+            if (r.solver == "thesis") out["iterations"] = o->fit.iterations;
             out["seconds"] = seconds;
             if (o->fit.clear_coat_index > 0) out["clear_coat_index"] = o->fit.clear_coat_index;
             if (all) {
@@ -300,9 +305,11 @@ CommandRunner add_fit_command(CLI::App& app) {
             if (r.solver == "thesis")
                 std::printf("stage 1 (mean of RGB): ns %.4f  cd %.6f  cs %.6f  e %.6g\n", r.ns, r.mono_cd, r.mono_cs, r.error_mono);
             std::printf("%s: %s  e %.6g\n", r.solver == "thesis" ? "stage 2 (per channel)" : "fit", parameters_text(r).c_str(), r.error_rgb);
-            if (r.residual == "linear" && r.loss == "squared")
-                std::printf("weighted cost %.6g (optimum %.6g), weighted RMS %.6g 1/sr%s\n", r.cost, r.optimum_cost, r.weighted_rms,
-                            r.converged ? "" : "  NOT CONVERGED");
+            if (r.residual == "linear" && r.loss == "squared" && r.solver == "thesis")
+                std::printf("weighted cost %.6g (the global optimum: %.6g), weighted RMS %.6g 1/sr%s\n", r.cost, r.optimum_cost,
+                            r.weighted_rms, r.converged ? "" : "  NOT CONVERGED");
+            else if (r.residual == "linear" && r.loss == "squared")
+                std::printf("weighted cost %.6g, weighted RMS %.6g 1/sr%s\n", r.cost, r.weighted_rms, r.converged ? "" : "  NOT CONVERGED");
             else
                 std::printf("weighted cost %.6g (%s residual, %s loss, scale %.3g)%s\n", r.cost, r.residual.c_str(), r.loss.c_str(),
                             r.loss_scale_used, r.converged ? "" : "  NOT CONVERGED");
@@ -314,9 +321,16 @@ CommandRunner add_fit_command(CLI::App& app) {
             std::printf("preview %s (%s): measured | model | difference (red: measured above the model, blue: below, full colour at "
                         "%.3g 1/sr, mean of RGB); phi_out = 0 (mirror side) in each panel's centre; rows beyond %.0f deg greyed\n",
                         o->preview.c_str(), r.model.c_str(), preview_scale, o->fit.limit_deg);
+        std::vector<std::string> said;  // warnings every model shares (masked samples, the coat) once
         for (const fit::FitResult& each : results)
-            for (const std::string& warning : each.warnings)
-                std::fprintf(stderr, "fxview fit: warning: %s%s\n", all ? (each.model + ": ").c_str() : "", warning.c_str());
+            for (const std::string& warning : each.warnings) {
+                const bool shared = std::all_of(results.begin(), results.end(), [&](const fit::FitResult& r) {
+                    return std::find(r.warnings.begin(), r.warnings.end(), warning) != r.warnings.end();
+                });
+                if (shared && std::find(said.begin(), said.end(), warning) != said.end()) continue;
+                if (shared) said.push_back(warning);
+                std::fprintf(stderr, "fxview fit: warning: %s%s\n", all && !shared ? (each.model + ": ").c_str() : "", warning.c_str());
+            }
         return 0;
     };
 }

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/film_error.hpp"
 #include "app/spectrum_plot.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
@@ -76,7 +77,7 @@ CommandRunner add_spectra_command(CLI::App& app) {
         double film_nm = -1;
     };
     auto o = std::make_shared<Options>();
-    CLI::App* spectra = app.add_subcommand("spectra", "Spectral library tools: list, xyz, pack, cmf, plot, lod");
+    CLI::App* spectra = app.add_subcommand("spectra", "Spectral library tools: list, xyz, pack, cmf, plot, lod, film-error");
     spectra->require_subcommand(1);
     spectra->add_option("--library", o->library, "Spectral library file")->capture_default_str();
 
@@ -163,8 +164,23 @@ CommandRunner add_spectra_command(CLI::App& app) {
     lod->add_option("--upper", o->upper, "Highest wavelength (nm)")->capture_default_str();
     lod->add_flag("--json", o->json, "Print one JSON object per level");
 
-    return [o, list, xyz, pack, cmf, plot, lod, run_lod] {
+    auto film = std::make_shared<FilmErrorOptions>();
+    CLI::App* film_error = spectra->add_subcommand(
+        "film-error", "CIEDE2000 of thin films by the Fourier series (per order) against the 1 nm transfer-matrix integral");
+    film_error->add_option("--orders", film->orders, "Series orders to study")->capture_default_str()->delimiter(',');
+    film_error->add_option("--light", film->light, "Light spectrum (library name)")->capture_default_str();
+    film_error->add_option("--observer", film->observer, "1931 (2 degree) or 1964 (10 degree)")->capture_default_str();
+    film_error->add_option("--thickness-step", film->thickness_step, "Thickness step (nm)")->capture_default_str();
+    film_error->add_option("--max-thickness", film->max_thickness, "Thickest film (nm)")->capture_default_str();
+    film_error->add_option("--angle-step", film->angle_step, "Angle step (degrees; 89 is always included)")->capture_default_str();
+    film_error->add_flag("--json", film->json, "Print the table as JSON");
+
+    return [o, list, xyz, pack, cmf, plot, lod, run_lod, film, film_error] {
         if (lod->parsed()) return run_lod(*o);
+        if (film_error->parsed()) {
+            film->library = o->library;
+            return run_film_error(*film);
+        }
         if (list->parsed()) {
             const spectral::SpectralLibrary library = spectral::load_library(o->library);
             nlohmann::json entries = nlohmann::json::array();

@@ -43,14 +43,27 @@ glm::ivec2 parse_int_pair(const std::string& option, const std::string& text, ch
 
 }  // namespace
 
-std::vector<float> parse_floats(const std::string& option, const std::string& text, size_t count) {
+namespace {
+
+template <typename Number>
+std::vector<Number> parse_numbers(const std::string& option, const std::string& text, size_t count) {
     const auto parts = split(text, ',');
-    std::vector<float> values(parts.size());
+    std::vector<Number> values(parts.size());
     bool ok = parts.size() == count;
     for (size_t i = 0; ok && i < parts.size(); ++i) ok = parse_number(parts[i], values[i]) && std::isfinite(values[i]);
     if (!ok)
         throw UsageError(option + ": expected " + std::to_string(count) + " comma-separated numbers, got '" + text + "'");
     return values;
+}
+
+}  // namespace
+
+std::vector<float> parse_floats(const std::string& option, const std::string& text, size_t count) {
+    return parse_numbers<float>(option, text, count);
+}
+
+std::vector<double> parse_doubles(const std::string& option, const std::string& text, size_t count) {
+    return parse_numbers<double>(option, text, count);
 }
 
 glm::vec2 parse_vec2(const std::string& option, const std::string& text) {

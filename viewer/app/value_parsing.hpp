@@ -9,6 +9,7 @@
 namespace fxview::app {
 
 std::vector<float> parse_floats(const std::string& option, const std::string& text, size_t count);
+std::vector<double> parse_doubles(const std::string& option, const std::string& text, size_t count);  // model parameters: exact
 glm::vec2 parse_vec2(const std::string& option, const std::string& text);
 glm::vec3 parse_vec3(const std::string& option, const std::string& text);
 glm::vec4 parse_vec4(const std::string& option, const std::string& text);

@@ -368,7 +368,7 @@ FitResult fit_brdf(const Observations& observed, const FitOptions& options) {
     result.samples_masked = observed.masked;
     if (observed.masked > 0)
         result.warnings.push_back(std::to_string(observed.masked) + " of " + std::to_string(observed.total) +
-                                  " samples are unmeasured (negative) and left out");
+                                  " samples are negative (unmeasured, or below the horizon in a tabulated file) and left out");
     if (options.clear_coat_index > 0) {
         char text[240];
         std::snprintf(text, sizeof text,

@@ -127,8 +127,6 @@ public:
         result.technique = technique_;
         result.converged = r.converged;
         result.warnings = r.warnings;
-        if (measurement.merl && r.samples_masked > 0)
-            result.warnings.push_back(std::to_string(r.samples_masked) + " unmeasured (negative) samples left out");
         for (const double e : r.error_per_iteration) result.cost_per_iteration.push_back(e * e);
         char line[256];
         std::snprintf(line, sizeof line, "%d directions inside %.0f deg of %s, %s solver: %s", r.samples_used, options.limit_deg,
@@ -143,7 +141,10 @@ public:
             }
         }
         result.summary.push_back(fitted);
-        std::snprintf(line, sizeof line, "weighted cost %.6g (optimum %.6g)%s", r.cost, r.optimum_cost, r.converged ? "" : "  NOT CONVERGED");
+        if (r.solver == "thesis")
+            std::snprintf(line, sizeof line, "weighted cost %.6g (the global optimum: %.6g)%s", r.cost, r.optimum_cost, r.converged ? "" : "  NOT CONVERGED");
+        else
+            std::snprintf(line, sizeof line, "weighted cost %.6g, weighted RMS %.3g 1/sr%s", r.cost, r.weighted_rms, r.converged ? "" : "  NOT CONVERGED");
         result.summary.push_back(line);
         result.numbers = {{"weighted_cost", r.cost}, {"weighted_rms", r.weighted_rms}, {"optimum_cost", r.optimum_cost}, {"samples_used", r.samples_used},
                           {"samples_masked", static_cast<double>(r.samples_masked)}, {"error_rgb", r.error_rgb}, {"limit_deg", options.limit_deg}};
