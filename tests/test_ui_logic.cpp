@@ -109,8 +109,9 @@ TEST_CASE("error messages become file:line places; each editor gets its own way 
     const std::string file = (std::filesystem::temp_directory_path() / "fxview-error-list.fx").string();
     std::ofstream(file) << "x\n";
     const auto places = ui::error_locations(file + ":12: pass P: no shader 'Missing'\nnote: something\n/no/such/file.fx:3: gone\n" + file +
-                                            ":40: error: x");
-    REQUIRE(places.size() == 2);  // lines naming no existing file are not places
+                                            ":40: error: x\n" + file + ":12: second message");
+    REQUIRE(places.size() == 2);  // lines naming no existing file are not places; one place per file:line
+    CHECK(places[0].message.find("second message") != std::string::npos);
     CHECK(places[0].line == 12);
     CHECK(places[0].file == file);
     CHECK(places[1].line == 40);

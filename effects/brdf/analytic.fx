@@ -27,7 +27,7 @@ uniform float BeckmannM < string UIName = "Slope m"; float UIMin = 0.02; float U
                           string UIHelp = "RMS slope of the microfacets"; > = 0.3;
 uniform float Eta < string UIName = "Index of refraction"; float UIMin = 1; float UIMax = 3; float UIStep = 0.01; string UIGroup = "Cook-Torrance (Beckmann)"; > = 1.5;
 uniform bool PrintedBeckmann < string UIName = "Beckmann as printed"; string UIGroup = "Cook-Torrance (Beckmann)";
-                               string UIHelp = "The lecture notes' misprinted 1/(4 m^2 cos^4) instead of the normalised 1/(pi m^2 cos^4): highlights 4/pi too bright"; > = false;
+                               string UIHelp = "A common misprint: 1/(4 m^2 cos^4) instead of the normalised 1/(pi m^2 cos^4); highlights 4/pi too bright"; > = false;
 
 uniform vec3 ASDiffuse < string UIName = "Rd"; string UIWidget = "color"; string UIGroup = "Ashikhmin-Shirley"; > = {0.45, 0.3, 0.15};
 uniform vec3 ASSpecular < string UIName = "Rs"; string UIWidget = "color"; string UIGroup = "Ashikhmin-Shirley"; > = {0.3, 0.3, 0.3};

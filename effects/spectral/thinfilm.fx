@@ -14,7 +14,7 @@ uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = 
 uniform float Brightness < string UIName = "Brightness"; float UIMin = 0; float UIMax = 8; float UIStep = 0.1; string UIGroup = "Lighting";
                            string UIHelp = "Scales the reflected light: 1 is physical (a perfect mirror under illuminant E gives Y = 1)"; > = 2.0;
 uniform int Incidence < string UIName = "Angle of incidence from"; string UIWidget = "combo"; string UIItems = "view|light"; string UIGroup = "Lighting";
-                        string UIHelp = "view: light arriving from the mirror direction of the eye (a uniform sky); light: the angle to the point light, as in the original viewer"; > = 0;
+                        string UIHelp = "view: light arriving from the mirror direction of the eye (a uniform sky); light: the angle to the point light"; > = 0;
 
 uniform float OuterIndex < string UIName = "Outer medium n0"; float UIMin = 1; float UIMax = 2.5; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 1; > = 1.0;
 uniform float FilmIndex < string UIName = "Film n1"; float UIMin = 1; float UIMax = 3; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 2;

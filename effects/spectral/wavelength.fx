@@ -11,12 +11,12 @@ uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = 
 uniform int ObjectSpectrum < string UIName = "Object spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
                              string UIHelp = "Index in spectra/library.txt (10-23 = CIE test colour samples)"; > = 14;
 uniform float Brightness < string UIName = "Brightness"; float UIMin = 0; float UIMax = 8; float UIStep = 0.1; string UIGroup = "Lighting";
-                           string UIHelp = "Intensity scale (Code 11 uses 2)"; > = 2.0;
+                           string UIHelp = "Intensity scale of the lit colour"; > = 2.0;
 uniform float Kd < string UIName = "Diffuse kd"; float UIMin = 0; float UIMax = 1; string UIGroup = "Lighting"; > = 0.8;
 uniform float Ks < string UIName = "Specular ks"; float UIMin = 0; float UIMax = 1; string UIGroup = "Lighting"; > = 0.4;
 uniform float Power < string UIName = "Specular power"; float UIMin = 1; float UIMax = 256; string UIGroup = "Lighting"; > = 32.0;
 uniform bool Metal < string UIName = "Metal"; string UIGroup = "Lighting";
-                     string UIHelp = "Code 11: the highlight takes the light's colour (metal) or the object's"; > = false;
+                     string UIHelp = "On: the highlight takes the light's colour, as on a metal; off: the object's colour"; > = false;
 
 struct Geometry { float lambert; float phong; float blinn; };
 

@@ -203,12 +203,12 @@ CommandRunner add_fit_command(CLI::App& app) {
     std::string models;
     for (const auto& name : fit::model_names()) models += (models.empty() ? "" : ", ") + name;
     command->add_option("--model", o->model,
-                        "The model: " + models + "; or all (each fitted and ranked by weighted cost). ashikhmin-fit is the thesis' "
-                        "simplified Ashikhmin-Shirley")
+                        "The model: " + models + "; or all (each fitted and ranked by weighted cost). ashikhmin-fit is the simplified "
+                        "Ashikhmin-Shirley of the original fitter")
         ->capture_default_str();
     command->add_option("--clear-coat", o->fit.clear_coat_index,
-                        "The data are a base under a clear coat of this refractive index with its Fresnel reflection removed (the "
-                        "thesis' lacquer files): fit base / (1 - Fresnel) (0: no coat)")
+                        "The data are a base under a clear coat of this refractive index with its Fresnel reflection removed (as in "
+                        "lacquer measurements): fit base / (1 - Fresnel) (0: no coat)")
         ->capture_default_str();
     command->add_option("--limit", o->fit.limit_deg, "Leave out light and camera angles beyond this (degrees)")
         ->capture_default_str()->check(CLI::Range(5.0, 90.0));
@@ -216,17 +216,17 @@ CommandRunner add_fit_command(CLI::App& app) {
         ->capture_default_str()->check(CLI::Range(1, 100000));
     command->add_option("--solver", o->solver,
                         "global: the optimum of the weighted least squares (bounded: ns > 0, cd >= 0, 0 <= cs <= 1); "
-                        "thesis: seed 000's two-stage Levenberg-Marquardt from --start-* (may stall; reported)")
+                        "thesis: the original fitter's two-stage Levenberg-Marquardt from --start-* (ashikhmin-fit only; may stall: reported)")
         ->capture_default_str()->check(CLI::IsMember({"global", "thesis"}));
     command->add_option("--residual", o->residual,
-                        "linear (the thesis'), cbrt or log: compress the residual so that the highlight's peak does not outweigh the rest "
+                        "linear, cbrt or log: compress the residual so that the highlight's peak does not outweigh the rest "
                         "(global solver)")
         ->capture_default_str()->check(CLI::IsMember({"linear", "cbrt", "log"}));
     command->add_option("--loss", o->loss, "squared (least squares), huber or cauchy: robust against outliers (global solver)")
         ->capture_default_str()->check(CLI::IsMember({"squared", "huber", "cauchy"}));
     command->add_option("--loss-scale", o->fit.loss_scale, "Robust losses: the residual where they turn (0: 1.345 x the residuals' robust sigma)")
         ->capture_default_str();
-    command->add_option("--start-ns", o->fit.start_ns, "Thesis solver: starting exponent (the thesis starts low: 25-50)")->capture_default_str();
+    command->add_option("--start-ns", o->fit.start_ns, "Thesis solver: starting exponent (start low: 25-50)")->capture_default_str();
     command->add_option("--start-cd", o->fit.start_cd, "Thesis solver: starting diffuse weight")->capture_default_str();
     command->add_option("--start-cs", o->fit.start_cs, "Thesis solver: starting specular weight")->capture_default_str();
     command->add_option("--out,-o", o->out, "Write the parameters as CSV (with --model all: the ranking)");
@@ -234,7 +234,7 @@ CommandRunner add_fit_command(CLI::App& app) {
     command->add_option("--preview", o->preview, "Write measured | model | difference as an image (PNG, EXR, PFM)");
     command->add_option("--brighten", o->preview_options.brighten, "Preview: multiply values by this")->capture_default_str();
     command->add_option("--gamma", o->preview_options.gamma, "Preview: raise values to 1/gamma")->capture_default_str()->check(CLI::Range(0.1, 10.0));
-    command->add_option("--progress", o->progress, "Write the error number e per iteration as CSV (fig. 5.2)");
+    command->add_option("--progress", o->progress, "Thesis solver: write the error number e per iteration of its first stage as CSV");
     command->add_flag("--json", o->json, "Print the result as JSON");
     return [o] {
         o->fit.solver = o->solver == "thesis" ? fit::Solver::Thesis : fit::Solver::Global;
@@ -346,13 +346,13 @@ CommandRunner add_brdf_grid_command(CLI::App& app) {
         bool merl_out = false;
     };
     auto o = std::make_shared<Options>();
-    CLI::App* command = app.add_subcommand("brdf-grid", "Tabulate an analytic BRDF on the thesis' measurement grid (synthetic data for fit)");
+    CLI::App* command = app.add_subcommand("brdf-grid", "Tabulate an analytic BRDF on a goniometer grid (synthetic data for fit)");
     command->add_option("--model", o->model, kGridModels)->capture_default_str();
     command->add_option("--param", o->params, "KEY=VALUE, colours as r,g,b (e.g. --param cs=0.5,0.4,0.3 --param ns=80)");
     command->add_option("--noise", o->noise, "Relative Gaussian noise on every value (e.g. 0.02)")->check(CLI::Range(0.0, 1.0));
     command->add_option("--seed", o->seed, "Noise seed (the same seed gives the same file)")->capture_default_str();
     command->add_option("--merl", o->merl, "Sample a MERL .binary file instead of a model");
-    command->add_option("--samples", o->samples, "Samples of theta_in, theta_out (0..90) and phi_out (0..180); the thesis' 19 37 36")
+    command->add_option("--samples", o->samples, "Samples of theta_in, theta_out (0..90) and phi_out (0..180); default: the original fitter's measurement grid")
         ->expected(3)->capture_default_str();
     command->add_option("--digits", o->digits, "Significant digits written (17 keeps doubles exact)")->capture_default_str()->check(CLI::Range(3, 17));
     command->add_option("--out,-o", o->out, "CSV file, or with --merl-out nothing")->required();

@@ -99,6 +99,13 @@ struct Technique {
     std::vector<Pass> passes;
     std::vector<Annotation> annotations;
     SourceLocation where;
+
+    // What the user interface shows: its `string UIName` annotation, else its name.
+    std::string label() const {
+        for (const auto& a : annotations)
+            if (a.name == "UIName" && a.value.is_string && !a.value.text.empty()) return a.value.text;
+        return name;
+    }
 };
 
 // `plugin NAME < string Type = "brdf-fit"; ... >;`: a built-in plugin the effect runs on its own

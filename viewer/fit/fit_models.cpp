@@ -36,7 +36,7 @@ Basis fresnel_weighted(double diffuse, double lobe, double hv) {
 class AshikhminShirleyFitModel final : public FitModel {
 public:
     std::string name() const override { return "ashikhmin-fit"; }
-    std::string title() const override { return "Ashikhmin-Shirley, simplified without Fresnel (the thesis' model)"; }
+    std::string title() const override { return "Ashikhmin-Shirley, simplified, without Fresnel"; }
     std::string technique() const override { return "AshikhminShirleyFit"; }
     std::vector<ShapeParameter> shape() const override { return {{"ns", 1e-2, 1e6}}; }
     std::array<std::string, 2> scale_names() const override { return {"cd", "cs"}; }

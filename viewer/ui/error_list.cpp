@@ -3,6 +3,7 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <regex>
@@ -21,7 +22,10 @@ std::vector<ErrorLocation> error_locations(const std::string& text) {
         if (!std::regex_search(line, m, place)) continue;
         std::error_code missing;
         if (!std::filesystem::is_regular_file(m[1].str(), missing)) continue;  // "note:" lines and the like
-        out.push_back({m[1].str(), std::stoi(m[2].str()), line});
+        const int number = std::stoi(m[2].str());
+        const auto seen = std::find_if(out.begin(), out.end(), [&](const ErrorLocation& e) { return e.file == m[1].str() && e.line == number; });
+        if (seen != out.end()) seen->message += "\n" + line;  // messages of one line stay one place
+        else out.push_back({m[1].str(), number, line});
     }
     return out;
 }

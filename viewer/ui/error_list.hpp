@@ -12,8 +12,8 @@ struct ErrorLocation {
     std::string message;  // the whole message line
 };
 
-// Every line of `text` that starts `FILE:LINE:` (an effect error, a GLSL error mapped to the
-// effect's file, a texture error with a line).
+// Every place `FILE:LINE:` that a line of `text` starts with (an effect error, a GLSL error mapped
+// to the effect's file, a texture error with a line); messages of the same place are joined.
 std::vector<ErrorLocation> error_locations(const std::string& text);
 
 // The command that opens `file` at `line` in `editor` (a program with optional arguments, as in

@@ -165,7 +165,8 @@ bool draw_groups(const effect::Effect& effect, effect::ParameterValues& values, 
     float label_width = 0;
     for (const effect::Parameter* p : rows) label_width = std::max(label_width, ImGui::CalcTextSize(label_of(*p).c_str()).x);
     const float available = ImGui::GetContentRegionAvail().x;
-    const float item_width = std::max(available * 0.4f, available - label_width - ImGui::GetFrameHeight() - 3 * ImGui::GetStyle().ItemSpacing.x);
+    // (At least 30 % for the widget: a panel too narrow for a label clips it; its tooltip has it whole.)
+    const float item_width = std::max(available * 0.3f, available - label_width - ImGui::GetFrameHeight() - 3 * ImGui::GetStyle().ItemSpacing.x);
     ImGui::PushItemWidth(item_width);
     for (const effect::Parameter* p : rows) {
         if (p->ui.group != group) {
@@ -201,7 +202,10 @@ bool draw_parameter_panel(render::EffectSession& session, const std::vector<std:
     if (!unused.empty()) {
         ImGui::Spacing();
         std::string names;
-        for (size_t i = 0; i < techniques.size(); ++i) names += (i ? ", " : "") + techniques[i];
+        for (size_t i = 0; i < techniques.size(); ++i) {
+            const effect::Technique* t = effect.find_technique(techniques[i]);
+            names += (i ? ", " : "") + (t ? t->label() : techniques[i]);
+        }
         const std::string header = "Not read by " + names + " (" + std::to_string(unused.size()) + ")##unused";
         if (ImGui::CollapsingHeader(header.c_str())) {
             ImGui::Indent();

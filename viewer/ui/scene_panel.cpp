@@ -91,7 +91,7 @@ void ViewerScene::add_to(StateHash& h) const {
 }
 
 void draw_scene_panel(ViewerScene& view, const std::string& technique, bool has_effect, std::string& status) {
-    ImGui::TextUnformatted("Turn with the left mouse button, move with the right, zoom with the wheel.");
+    ImGui::TextWrapped("Turn with the left mouse button, move with the right, zoom with the wheel.");
     const char* targets[] = {"Camera", "Light", "Object"};
     int selected = static_cast<int>(view.selected);
     if (ImGui::Combo("drag moves", &selected, targets, 3)) view.selected = static_cast<Target>(selected);
@@ -104,6 +104,7 @@ void draw_scene_panel(ViewerScene& view, const std::string& technique, bool has_
         view.scene.light.pose.position = glm::inverse(glm::mat3_cast(view.scene.light.pose.rotation)) * light;
     ImGui::Checkbox("show the light in the view", &view.show_light);
     ImGui::ColorEdit4("background", &view.scene.background.r, ImGuiColorEditFlags_Float);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Linear RGBA the picture is cleared to; where alpha is 0 the view shows its grey backdrop");
     ImGui::Separator();
     if (ImGui::Button("Add")) {
         ObjectState added{scene::SceneObject{}, technique, has_effect ? ViewMode::Effect : ViewMode::Normals, false};

@@ -148,7 +148,7 @@ void TexturePanel::draw_inspector(const render::GpuTexture& texture) {
     ImGui::SameLine();
     if (ImGui::Button("Fit")) zoom_ = 1, centre_ = glm::vec2(0.5f);
     ImGui::SameLine();
-    ImGui::TextDisabled("zoom %.3gx (wheel; drag to pan)", zoom_);
+    ImGui::TextDisabled("zoom %.3gx the fitted size (wheel; drag to pan)", zoom_);
 
     const float side = std::max(64.0f, std::min(ImGui::GetContentRegionAvail().x, 512.0f));
     const float aspect = texture.type == texture::TextureType::Tex1D ? 0.25f : static_cast<float>(std::max(texture.height, 1)) / std::max(texture.width, 1);

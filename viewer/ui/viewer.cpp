@@ -401,7 +401,11 @@ private:
             }
             ImGui::EndTabBar();
         }
-        if (!status_.empty()) ImGui::TextDisabled("%s", status_.c_str());
+        if (!status_.empty()) {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+            ImGui::TextWrapped("%s", status_.c_str());
+            ImGui::PopStyleColor();
+        }
         ImGui::End();
 
         ImGui::SetNextWindowPos(ImVec2(panel_width, 0));
@@ -448,10 +452,12 @@ private:
                                                        ImGuiTreeNodeFlags_DefaultOpen)) {
             for (size_t i = 0; i < errors.size(); ++i) {
                 ImGui::PushID(static_cast<int>(i));
-                ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.55f, 0.5f, 1.0f));
-                if (ImGui::Selectable(errors[i].message.c_str())) status_ = open_in_editor(errors[i].file, errors[i].line);
-                ImGui::PopStyleColor();
+                if (ImGui::SmallButton("Open")) status_ = open_in_editor(errors[i].file, errors[i].line);
                 if (ImGui::IsItemHovered()) ImGui::SetTooltip("Open %s at line %d in $VISUAL / $EDITOR", errors[i].file.c_str(), errors[i].line);
+                ImGui::SameLine();
+                ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.55f, 0.5f, 1.0f));
+                ImGui::TextWrapped("%s", errors[i].message.c_str());
+                ImGui::PopStyleColor();
                 ImGui::PopID();
             }
         }
@@ -479,22 +485,20 @@ private:
         }
         if (!view_.objects.empty()) {
             auto& object = view_.objects[static_cast<size_t>(view_.selected_object)];
-            // A technique's UIName annotation, where it has one, is what the user reads.
-            const auto shown_name = [](const effect::Technique& t) {
-                for (const auto& a : t.annotations)
-                    if (a.name == "UIName" && a.value.is_string) return a.value.text + " (" + t.name + ")";
-                return t.name;
-            };
+            // A technique's UIName annotation, where it has one, is what the user reads; its name (for the
+            // command line) is in the tooltip.
             const effect::Technique* current = session()->effect().find_technique(object.technique);
-            if (ImGui::BeginCombo("technique", current ? shown_name(*current).c_str() : object.technique.c_str())) {
-                for (const auto& t : session()->effect().techniques)
-                    if (ImGui::Selectable(shown_name(t).c_str(), t.name == object.technique)) {
+            if (ImGui::BeginCombo("technique", current ? current->label().c_str() : object.technique.c_str())) {
+                for (const auto& t : session()->effect().techniques) {
+                    if (ImGui::Selectable((t.label() + "##" + t.name).c_str(), t.name == object.technique)) {
                         for (auto& o : view_.objects)
                             if (&o == &object || ImGui::GetIO().KeyShift) o.technique = t.name;
                     }
+                    if (ImGui::IsItemHovered()) ImGui::SetTooltip("--technique %s", t.name.c_str());
+                }
                 ImGui::EndCombo();
             }
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("Technique of the selected object (Shift: all objects)");
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("Technique of the selected object (Shift: all objects): --technique %s", object.technique.c_str());
         }
         ImGui::InputText("preset", preset_input_, sizeof preset_input_);
         if (ImGui::Button("Save preset")) {
