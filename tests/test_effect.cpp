@@ -405,3 +405,21 @@ TEST_CASE("techniques that read TIME are animated; passes into render targets ar
     for (const auto& t : multipass.effect().techniques) any = any || multipass.renders_to_textures(t.name);
     CHECK(any);
 }
+
+TEST_CASE("an effect whose techniques fail to compile reports every technique's errors, each at its file:line") {
+    shared_context();
+    const std::string path = temp_path("two-bad.fx");
+    write_text(path, "#include \"fullscreen.glsl\"\n"
+                     "GLSLShader BadA { layout(location = 0) out vec4 c; void main() { c = vec4(nope_a); } }\n"
+                     "GLSLShader BadB { layout(location = 0) out vec4 c; void main() { c = vec4(nope_b); } }\n"
+                     "technique A { pass p { VertexShader = FullscreenVS; FragmentShader = BadA; Draw = Buffer; } }\n"
+                     "technique B { pass p { VertexShader = FullscreenVS; FragmentShader = BadB; Draw = Buffer; } }\n");
+    try {
+        render::EffectSession session(path, load_options(), {});
+        FAIL("the broken effect loaded");
+    } catch (const effect::EffectError& error) {
+        const std::string message = error.what();
+        CHECK(message.find("two-bad.fx:2:") != std::string::npos);  // technique A's shader
+        CHECK(message.find("two-bad.fx:3:") != std::string::npos);  // and technique B's
+    }
+}

@@ -1,5 +1,7 @@
 #include "render/effect_session.hpp"
 
+#include <optional>
+
 #include "core/error.hpp"
 #include "core/text.hpp"
 
@@ -20,8 +22,19 @@ std::unique_ptr<EffectSession::Loaded> EffectSession::prepare(std::unique_ptr<ef
                                                              const effect::ParameterValues& values) const {
     auto loaded = std::make_unique<Loaded>();
     loaded->effect = std::move(parsed);
-    for (const auto& technique : loaded->effect->techniques)
-        loaded->techniques.emplace(technique.name, effect::compile_technique(*loaded->effect, technique));
+    // Every technique is compiled and every failure reported together (each message keeps its own
+    // file:line), as `fxview check` does: the viewer lists them all, not the first technique's.
+    std::string failures;
+    std::optional<effect::SourceLocation> first;
+    for (const auto& technique : loaded->effect->techniques) {
+        try {
+            loaded->techniques.emplace(technique.name, effect::compile_technique(*loaded->effect, technique));
+        } catch (const effect::EffectError& error) {
+            failures += (failures.empty() ? "" : "\n") + std::string(error.what());
+            if (!first) first = error.location;
+        }
+    }
+    if (first) throw effect::EffectError(*first, failures, effect::EffectError::Lines{});
     loaded->resources = std::make_unique<EffectResources>(*loaded->effect, values, texture_dirs_);
     return loaded;
 }
