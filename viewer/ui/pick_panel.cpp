@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "image/color_encoding.hpp"
 
@@ -88,13 +89,14 @@ void PickPanel::draw(std::uint64_t current_key) const {
 void PickPanel::draw_marker(ImDrawList* list, ImVec2 origin, ImVec2 shown, int width, int height) const {
     if (!valid_ || width <= 0 || height <= 0) return;
     const float x = origin.x + (info_.x + 0.5f) / width * shown.x, y = origin.y + (info_.y + 0.5f) / height * shown.y;
-    const float r = std::max(6.0f, ImGui::GetFontSize() * 0.5f);
-    for (const ImU32 colour : {IM_COL32(0, 0, 0, 200), IM_COL32(255, 255, 0, 255)}) {
-        const float t = colour == IM_COL32(0, 0, 0, 200) ? 3.0f : 1.0f;
-        list->AddLine(ImVec2(x - r, y), ImVec2(x - 2, y), colour, t);
-        list->AddLine(ImVec2(x + 2, y), ImVec2(x + r, y), colour, t);
-        list->AddLine(ImVec2(x, y - r), ImVec2(x, y - 2), colour, t);
-        list->AddLine(ImVec2(x, y + 2), ImVec2(x, y + r), colour, t);
+    const float r = std::max(8.0f, ImGui::GetFontSize() * 0.7f);
+    // A cross with a gap at the pixel, dark under light, so that it shows on bright highlights and on
+    // black alike.
+    for (const auto& [colour, thickness] : {std::pair{IM_COL32(0, 0, 0, 220), 4.0f}, std::pair{IM_COL32(255, 255, 255, 255), 1.5f}}) {
+        list->AddLine(ImVec2(x - r, y), ImVec2(x - 3, y), colour, thickness);
+        list->AddLine(ImVec2(x + 3, y), ImVec2(x + r, y), colour, thickness);
+        list->AddLine(ImVec2(x, y - r), ImVec2(x, y - 3), colour, thickness);
+        list->AddLine(ImVec2(x, y + 3), ImVec2(x, y + r), colour, thickness);
     }
 }
 
