@@ -10,7 +10,7 @@ spectral::Vec3 film_xyz_fourier(const spectral::SensitivityTransform& transform,
     for (const auto polarisation : {optics::Polarisation::S, optics::Polarisation::P}) {
         const optics::FilmSeries series = optics::film_series(film.outer, film.index, film.substrate, film.cos_outer, polarisation, order);
         const double path = 2.0 * film.index * film.thickness_nm * series.cos_film;  // δ = 2π path / λ
-        const spectral::Vec3 white = transform.white();
+        const spectral::Vec3& white = transform.white();
         for (size_t c = 0; c < 3; ++c) xyz[c] += 0.5 * series.c[0].real() * white[c];
         for (int m = 1; m <= order; ++m) {
             const spectral::ComplexXyz f = transform.at(m * path);

@@ -35,6 +35,17 @@ std::unique_ptr<EffectSession::Loaded> EffectSession::prepare(std::unique_ptr<ef
         }
     }
     if (first) throw effect::EffectError(*first, failures, effect::EffectError::Lines{});
+    for (const auto& [name, compiled] : loaded->techniques) {
+        TechniqueTraits& t = loaded->traits[name];
+        for (const auto& pass : compiled.passes) {
+            t.renders_to_textures = t.renders_to_textures || !pass.pass->states.render_targets.empty();
+            for (const auto& uniform : pass.uniforms) {
+                t.reads.insert(uniform.parameter->name);
+                const std::string semantic = to_lower(uniform.parameter->semantic);
+                t.animated = t.animated || semantic == "time" || semantic == "frame";
+            }
+        }
+    }
     loaded->resources = std::make_unique<EffectResources>(*loaded->effect, values, texture_dirs_);
     return loaded;
 }
@@ -78,32 +89,10 @@ void EffectSession::select_technique(const std::string& name) {
     technique_ = name;
 }
 
-std::set<std::string> EffectSession::parameters_read(const std::string& technique) const {
-    std::set<std::string> read;
-    const auto found = loaded_->techniques.find(technique);
-    if (found == loaded_->techniques.end()) return read;
-    for (const auto& pass : found->second.passes)
-        for (const auto& uniform : pass.uniforms) read.insert(uniform.parameter->name);
-    return read;
-}
-
-bool EffectSession::animated(const std::string& technique) const {
-    const auto found = loaded_->techniques.find(technique);
-    if (found == loaded_->techniques.end()) return false;
-    for (const auto& pass : found->second.passes)
-        for (const auto& uniform : pass.uniforms) {
-            const std::string semantic = to_lower(uniform.parameter->semantic);
-            if (semantic == "time" || semantic == "frame") return true;
-        }
-    return false;
-}
-
-bool EffectSession::renders_to_textures(const std::string& technique) const {
-    const auto found = loaded_->techniques.find(technique);
-    if (found == loaded_->techniques.end()) return false;
-    for (const auto& pass : found->second.passes)
-        if (!pass.pass->states.render_targets.empty()) return true;
-    return false;
+const EffectSession::TechniqueTraits& EffectSession::traits(const std::string& technique) const {
+    static const TechniqueTraits none;
+    const auto found = loaded_->traits.find(technique);
+    return found == loaded_->traits.end() ? none : found->second;
 }
 
 void EffectSession::reload_textures() {

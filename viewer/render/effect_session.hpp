@@ -40,19 +40,23 @@ public:
 
     void render(const scene::Scene& scene, const gl::RenderTarget& target, FrameTiming timing = {}, bool clear_target = true);
     const EffectResources& resources() const { return *loaded_->resources; }
-    // The parameters the technique's passes read: their programs' active uniforms (what the
-    // compiler kept), for the parameter panel. Empty for an unknown technique.
-    std::set<std::string> parameters_read(const std::string& technique) const;
-    // Whether the technique's picture changes with time alone (a TIME or FRAME semantic is read).
-    bool animated(const std::string& technique) const;
-    // Whether it renders into textures of its own first (later passes may read neighbouring pixels:
-    // it cannot be drawn strip by strip).
-    bool renders_to_textures(const std::string& technique) const;
+    // What a technique's compiled passes say about it, found once when it is compiled (the viewer
+    // asks every frame). Unknown techniques: nothing read, not animated, no textures of their own.
+    struct TechniqueTraits {
+        std::set<std::string> reads;       // the parameters its programs read (active uniforms the compiler kept)
+        bool animated = false;             // a TIME or FRAME semantic is read: the picture changes with time alone
+        bool renders_to_textures = false;  // later passes may read neighbouring pixels: no strip-by-strip drawing
+    };
+    const TechniqueTraits& traits(const std::string& technique) const;
+    const std::set<std::string>& parameters_read(const std::string& technique) const { return traits(technique).reads; }
+    bool animated(const std::string& technique) const { return traits(technique).animated; }
+    bool renders_to_textures(const std::string& technique) const { return traits(technique).renders_to_textures; }
 
 private:
     struct Loaded {
         std::unique_ptr<effect::Effect> effect;  // stable address: compiled passes point into it
         std::map<std::string, effect::CompiledTechnique> techniques;
+        std::map<std::string, TechniqueTraits> traits;
         std::unique_ptr<EffectResources> resources;
     };
     // Compiles every technique and loads the textures of a parsed effect.

@@ -15,6 +15,7 @@ SensitivityTransform::SensitivityTransform(const Observer& observer, const Spect
         inverse_wavelength_.push_back(1.0 / nm);
         weight_.push_back({observer.x.at(nm) * light.at(nm) / luminance, observer.y.at(nm) * light.at(nm) / luminance,
                            observer.z.at(nm) * light.at(nm) / luminance});
+        for (size_t c = 0; c < 3; ++c) white_[c] += weight_.back()[c];
     }
 }
 
@@ -25,11 +26,6 @@ ComplexXyz SensitivityTransform::at(double path_difference_nm) const {
         for (size_t c = 0; c < 3; ++c) sum[c] += weight_[i][c] * phase;
     }
     return sum;
-}
-
-Vec3 SensitivityTransform::white() const {
-    const ComplexXyz f = at(0.0);
-    return {f[0].real(), f[1].real(), f[2].real()};
 }
 
 }  // namespace fxview::spectral

@@ -20,9 +20,10 @@ class SensitivityTransform {
 public:
     SensitivityTransform(const Observer& observer, const Spectrum& light, const Integration& range = {});
     ComplexXyz at(double path_difference_nm) const;  // by the sum itself (exact)
-    Vec3 white() const;                              // F(0): the light's XYZ, Y = 1
+    const Vec3& white() const { return white_; }     // F(0): the light's XYZ, Y = 1
 
 private:
+    Vec3 white_{};
     std::vector<double> inverse_wavelength_;
     std::vector<Vec3> weight_;
 };

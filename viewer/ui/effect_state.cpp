@@ -16,10 +16,10 @@ bool EffectState::open(const std::string& path, const std::string& technique, co
         options.preset = preset;
         session_ = app::open_effect_session(options);
         path_ = path;
-        error_.clear();
+        set_error("");
         return true;
     } catch (const std::exception& error) {
-        error_ = error.what();  // the last good effect (if any) stays
+        set_error(error.what());  // the last good effect (if any) stays
         return false;
     }
 }
@@ -47,7 +47,7 @@ bool EffectState::poll() {
 
 void EffectState::reload() {
     const auto error = session_->reload();
-    error_ = error ? *error : std::string();
+    set_error(error ? *error : std::string());
 }
 
 void EffectState::allow_folder(const std::string& folder) {

@@ -10,6 +10,7 @@
 
 #include "app/effect_options.hpp"
 #include "render/effect_session.hpp"
+#include "ui/error_list.hpp"
 
 namespace fxview::ui {
 
@@ -37,7 +38,12 @@ public:
     const std::string& path() const { return path_; }                    // the effect shown ("" for none)
     const std::string& requested_path() const { return request_.path; }  // the last one asked for
     const std::string& error() const { return error_; }
-    void set_error(std::string message) { error_ = std::move(message); }
+    // The error's file:line places, found when the error is set (they stat files: not every frame).
+    const std::vector<ErrorLocation>& error_places() const { return error_places_; }
+    void set_error(std::string message) {
+        error_ = std::move(message);
+        error_places_ = error_locations(error_);
+    }
 
 private:
     struct Request {
@@ -50,6 +56,7 @@ private:
     app::AccessOptions access_;
     std::unique_ptr<render::EffectSession> session_;
     std::string path_, error_;
+    std::vector<ErrorLocation> error_places_;
     Request request_;
     std::filesystem::file_time_type request_time_{};  // the requested file's time at the last attempt
     std::chrono::steady_clock::time_point last_poll_ = std::chrono::steady_clock::now();

@@ -186,7 +186,10 @@ bool draw_parameter_panel(render::EffectSession& session, const std::vector<std:
     const effect::Effect& effect = session.effect();
     effect::ParameterValues& values = session.values();
     std::set<std::string> read = named_by_plugins(effect);
-    for (const std::string& technique : techniques) read.merge(session.parameters_read(technique));
+    for (const std::string& technique : techniques) {
+        const auto& reads = session.parameters_read(technique);
+        read.insert(reads.begin(), reads.end());
+    }
     std::vector<const effect::Parameter*> used, unused;
     for (const auto& p : effect.parameters)
         if (p.semantic.empty() && !effect::is_sampler_type(p.type)) (read.count(p.name) ? used : unused).push_back(&p);

@@ -447,7 +447,7 @@ private:
 
     void draw_effect_tab() {
         ImGui::TextWrapped("Effect: %s", effect_.path().empty() ? "(none: built-in views)" : effect_.path().c_str());
-        const std::vector<ErrorLocation> errors = error_locations(effect_.error());
+        const std::vector<ErrorLocation>& errors = effect_.error_places();
         if (!errors.empty() && ImGui::CollapsingHeader(("Errors (" + std::to_string(errors.size()) + "): click to open in your editor").c_str(),
                                                        ImGuiTreeNodeFlags_DefaultOpen)) {
             for (size_t i = 0; i < errors.size(); ++i) {
@@ -653,7 +653,7 @@ private:
             requested_tab_ = "Textures";
             wait_frames_ = 1;
         } else if (a.verb == "open-error") {
-            const std::vector<ErrorLocation> errors = error_locations(effect_.error());
+            const std::vector<ErrorLocation>& errors = effect_.error_places();
             const int n = std::stoi(args[0]);
             if (n < 1 || n > static_cast<int>(errors.size()))
                 throw UsageError("open-error " + args[0] + ": there are " + std::to_string(errors.size()) + " error places");
