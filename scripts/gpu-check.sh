@@ -21,6 +21,8 @@ fxview=build/bin/fxview
 for effect in spectral/wavelength spectral/thinfilm spectral/cd brdf/analytic brdf/measured; do
   "$fxview" bench "effects/$effect.fx" --frames 10 | tee "$out/bench-$(basename "$effect").md"
 done
+# Issue #14: the Fourier films' speed-up over the 1 nm loop, measured in one run.
+"$fxview" bench effects/spectral/thinfilm.fx --techniques FresnelExact,FresnelFourier,Bubble,BubbleFourier --frames 10 | tee "$out/bench-fourier.md"
 # The sweeps of every effect (issue #10) and the film-fit round trip on the NVIDIA driver's GLSL.
 for effect in debug examples/textured brdf/analytic brdf/measured spectral/wavelength spectral/cd spectral/thinfilm; do
   "$fxview" compare "effects/$effect.fx" --sweep --sweep-random 1 --size 24x24 | tail -3 | tee "$out/sweep-$(basename "$effect").txt" || true

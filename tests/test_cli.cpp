@@ -461,11 +461,16 @@ TEST_CASE("spectra film-error: the Fourier series of a film approaches the 1 nm 
     const Result r = run("spectra film-error --thickness-step 250 --angle-step 40 --orders 1,3,16 --json");
     REQUIRE(r.exit_code == 0);
     const auto rows = nlohmann::json::parse(r.out)["orders"];
-    REQUIRE(rows.size() == 6);  // 3 orders x dielectric, metal
+    REQUIRE(rows.size() == 8);  // (3 orders + the techniques' rule) x dielectric, metal
     for (size_t kind = 0; kind < 2; ++kind) {
         const std::string band = "d <= 1000 nm, angle <= 80";
-        const double m1 = rows[kind * 3]["d <= 1000 nm, angle <= 80"]["mean"], m3 = rows[kind * 3 + 1][band]["mean"],
-                     m16 = rows[kind * 3 + 2][band]["mean"];
+        const double m1 = rows[kind * 4]["d <= 1000 nm, angle <= 80"]["mean"], m3 = rows[kind * 4 + 1][band]["mean"],
+                     m16 = rows[kind * 4 + 2][band]["mean"];
+        // The techniques' rule (table, at most 16 terms, exact fallback) keeps every case of this band
+        // within one ΔE unit: docs/thin-films.md measures 0.52 at most on the full grid.
+        CHECK(rows[kind * 4 + 3]["order"] == "technique");
+        CHECK(rows[kind * 4 + 3][band]["max"].get<double>() < 1.0);
+        CHECK(rows[kind * 4 + 3]["d <= 1000 nm, angle > 80"]["max"].get<double>() < 1.0);
         CAPTURE(kind);
         CHECK(m1 > m3);
         CHECK(m3 > m16);

@@ -102,7 +102,7 @@ TEST_CASE("every thin-film technique matches its CPU reference (exact ones: char
     request.width = request.height = 96;
     request.effect.path = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/thinfilm.fx";
     const auto techniques = app::technique_names(request.effect);
-    CHECK(techniques.size() == 10);
+    CHECK(techniques.size() == 12);
     // Default soap-like film; then thick films on a metal-like substrate seen from the light with a
     // 16-layer dispersive stack, coarse steps and the 10° observer; then a film thinner than its surroundings
     // (total internal reflection in the stack).
@@ -152,7 +152,8 @@ TEST_CASE("a thin-film parameter wrong on the CPU side only makes the comparison
              {"PathDifference", "Thickness=101"}, {"Fresnel", "SubstrateIndex=1.52"}, {"FresnelExact", "SubstrateKappa=0.05"},
              {"Bubble", "FilmIndex=1.34"}, {"FabryPerot", "Incidence=1"}, {"MultiLayer", "Layers=5"},
              {"MultiLayerFaster", "SecondThickness=81"}, {"MultiLayer", "FilmDispersion=3000"}, {"BumpFresnelExact", "WaveFrequency=12.5"},
-             {"BumpFresnelExact", "WaveThickness=11000"}}) {
+             {"BumpFresnelExact", "WaveThickness=11000"}, {"FresnelFourier", "Polarisation=1"}, {"FresnelFourier", "Thickness=101"},
+             {"BubbleFourier", "FilmIndex=1.34"}, {"BubbleFourier", "LightSpectrum=4"}}) {
         const std::string technique = entry.first, wrong = entry.second;  // no structured binding: CAPTURE (clang 14)
         CAPTURE(technique);
         CAPTURE(wrong);
@@ -167,7 +168,7 @@ TEST_CASE("every analytic BRDF matches viewer/brdf, also with sharp highlights; 
     request.width = request.height = 96;
     request.effect.path = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/analytic.fx";
     const auto techniques = app::technique_names(request.effect);
-    CHECK(techniques.size() == 10);
+    CHECK(techniques.size() == 12);
     for (const auto& variant : std::vector<std::vector<std::string>>{
              {},
              {"Roughness=0.1", "Metallic=0.3", "PhongExponent=400", "PrintedBeckmann=true", "BeckmannM=0.1", "Nu=1000", "Nv=5",

@@ -388,6 +388,149 @@ GLSLShader MultiLayerFasterFS {
     }
 }
 
+// ---- Fourier-domain films (Belcour & Barla 2017; docs/thin-films.md) ----
+// With wavelength-independent indices, a film's reflectance is a cosine series in its round-trip
+// phase δ = 2π D / λ, D = 2 n1 d cos θ1:  R = C0 + 2 Σ_m Re(C_m e^{i m δ}),
+//     C0 = r01² + T,  C_m = (r01 τ + T x) x^{m−1},  τ = (1 − r01²) r12,  x = −r01 r12,  T = |τ|² / (1 − |x|²),
+// with r01 real (a lossless outer medium and film) and r12 complex (the substrate may absorb). Its
+// integral against light × CMF is C0 F(0) + 2 Σ_m Re(C_m F(m D)), F the light's sensitivity
+// transform, precomputed from our own 1 nm tables (spectral:fourier). The polarisations share F, so
+// their weighted coefficients are summed first. Terms stop at SeriesOrder or as soon as a bound on
+// everything left, 2 |C_m| / (1 − |x|) times the largest |F| from m D on, falls below 1e-5 of the
+// light. Past the film's critical angle
+// (a film less dense than the outer medium) the wave in the film decays and no series exists, and
+// near grazing incidence SeriesOrder terms may not converge: those fragments take the exact 1 nm
+// sum (Airy) instead.
+uniform sampler2D FilmFourier < string ResourceName = "spectral:fourier"; string Format = "32F"; string Filter = "nearest"; string Wrap = "clamp"; >;
+uniform int SeriesOrder < string UIName = "Series terms"; int UIMin = 1; int UIMax = 64; string UIGroup = "Fourier series";
+                          string UIHelp = "At most this many terms of the interference series; terms too small to matter are skipped, and where this many would leave more than 0.1 % of reflectance out (near grazing incidence) the exact wavelength sum is used"; > = 16;
+uniform int Polarisation < string UIName = "Polarisation"; string UIWidget = "combo"; string UIItems = "unpolarised|s (TE)|p (TM)"; string UIGroup = "Fourier series";
+                           string UIHelp = "Polarisation of the incident light (Fourier techniques)"; > = 0;
+
+const float kFourierStep = 8.0;   // nm between samples (viewer/spectral/fourier_table.hpp)
+const int kFourierSamples = 4096;
+const int kFourierRowsPerTable = 3;
+const float kSeriesTailLimit = 1e-3, kSeriesTermLimit = 1e-5;  // viewer/reference/film_fourier.hpp
+
+// F(D) = G(D) e^{i 2π D ν}: the stored envelope G, interpolated, times the carrier at the
+// sensitivity's mean frequency ν (per channel). 0 beyond the table: the incoherent limit.
+void sensitivity_at(int row, vec3 centre, float path, out vec3 re, out vec3 im) {
+    float x = path / kFourierStep;
+    re = vec3(0.0);
+    im = vec3(0.0);
+    if (x >= float(kFourierSamples - 1)) return;
+    int i = int(x);
+    float t = x - float(i);
+    vec3 envelope_re = mix(texelFetch(FilmFourier, ivec2(i, row), 0).rgb, texelFetch(FilmFourier, ivec2(i + 1, row), 0).rgb, t);
+    vec3 envelope_im = mix(texelFetch(FilmFourier, ivec2(i, row + 1), 0).rgb, texelFetch(FilmFourier, ivec2(i + 1, row + 1), 0).rgb, t);
+    vec3 angle = kTwoPi * fract(path * centre);
+    vec3 c = cos(angle), s = sin(angle);
+    re = envelope_re * c - envelope_im * s;
+    im = envelope_re * s + envelope_im * c;
+}
+
+// The largest |F| (any channel) from this path difference on: row + 2 holds it from sample 1 on; from
+// sample 0 on it is F(0) itself.
+float fourier_tail_bound(int row, float path) {
+    int i = int(path / kFourierStep);
+    if (i >= kFourierSamples - 1) return 0.0;
+    vec3 tail = i == 0 ? texelFetch(FilmFourier, ivec2(0, row), 0).rgb : texelFetch(FilmFourier, ivec2(i, row + 2), 0).rgb;
+    return max(tail.x, max(tail.y, tail.z));
+}
+
+// The exact sum at every nm of the table's range, with its normalisation (1 / Σ ȳ): where no series exists.
+vec3 exact_film_xyz(Film f, vec2 n2) {
+    vec2 n1 = vec2(FilmIndex, 0.0);
+    vec2 cos1 = refracted_cos_c(OuterIndex, n1, f.cos0), cos2 = refracted_cos_c(OuterIndex, n2, f.cos0);
+    Amplitude r01 = fresnel_c(vec2(OuterIndex, 0.0), vec2(f.cos0, 0.0), n1, cos1);
+    Amplitude r12 = fresnel_c(n1, cos1, n2, cos2);
+    vec2 path = kTwoPi * f.thickness * c_mul(n1, cos1);
+    vec2 weight = Polarisation == 1 ? vec2(1.0, 0.0) : Polarisation == 2 ? vec2(0.0, 1.0) : vec2(0.5);
+    vec3 xyz = vec3(0.0);
+    float ybar_sum = 0.0;
+    for (int nm = 360; nm <= 830; ++nm) {
+        vec2 s = hirayama_step(r01.s, r12.s, path / float(nm));
+        vec2 p = hirayama_step(r01.p, r12.p, path / float(nm));
+        vec3 cmf = texelFetch(CmfFloat, ivec2(nm - 360, Observer), 0).rgb;
+        xyz += spectrum_at(LightSpectrum, nm) * (weight.x * dot(s, s) + weight.y * dot(p, p)) * cmf;
+        ybar_sum += cmf.y;
+    }
+    return xyz / ybar_sum;
+}
+
+// The series' XYZ (before Brightness); false where it does not serve (see above).
+bool fourier_film_xyz(Film f, vec2 n2, out vec3 xyz) {
+    xyz = vec3(0.0);
+    float ratio = OuterIndex / FilmIndex;
+    float cos1_squared = (1.0 - ratio * ratio) + ratio * ratio * f.cos0 * f.cos0;  // as refracted_cos
+    if (cos1_squared <= 0.0) return false;
+    float cos1 = sqrt(cos1_squared);
+    vec2 cos2 = refracted_cos_c(OuterIndex, n2, f.cos0);
+    Amplitude r01 = fresnel_c(vec2(OuterIndex, 0.0), vec2(f.cos0, 0.0), vec2(FilmIndex, 0.0), vec2(cos1, 0.0));
+    Amplitude r12 = fresnel_c(vec2(FilmIndex, 0.0), vec2(cos1, 0.0), n2, cos2);
+    vec2 weight = Polarisation == 1 ? vec2(1.0, 0.0) : Polarisation == 2 ? vec2(0.0, 1.0) : vec2(0.5);
+    // Per polarisation: x, C0 and the weighted C_1; then C_{m+1} = C_m x.
+    vec2 x_s = -r01.s.x * r12.s, x_p = -r01.p.x * r12.p;
+    vec2 tau_s = (1.0 - r01.s.x * r01.s.x) * r12.s, tau_p = (1.0 - r01.p.x * r01.p.x) * r12.p;
+    // At grazing incidence r01 = -1: τ = 0 and |x| may be 1, where T is 0 (not 0/0) and so are all C_m.
+    float tail_s = dot(tau_s, tau_s) > 0.0 ? dot(tau_s, tau_s) / (1.0 - dot(x_s, x_s)) : 0.0;
+    float tail_p = dot(tau_p, tau_p) > 0.0 ? dot(tau_p, tau_p) / (1.0 - dot(x_p, x_p)) : 0.0;
+    vec2 c_s = weight.x * (r01.s.x * tau_s + tail_s * x_s), c_p = weight.y * (r01.p.x * tau_p + tail_p * x_p);
+    float c0 = weight.x * (r01.s.x * r01.s.x + tail_s) + weight.y * (r01.p.x * r01.p.x + tail_p);
+    float decay_s = length(x_s) < 1.0 ? 1.0 / (1.0 - length(x_s)) : 0.0, decay_p = length(x_p) < 1.0 ? 1.0 / (1.0 - length(x_p)) : 0.0;
+
+    int row = kFourierRowsPerTable * (Observer * (textureSize(FilmFourier, 0).y / (2 * kFourierRowsPerTable)) + LightSpectrum);
+    vec3 white = texelFetch(FilmFourier, ivec2(0, row), 0).rgb;  // F(0), real
+    vec3 centre = texelFetch(FilmFourier, ivec2(0, row + 2), 0).rgb;
+    float brightest = max(white.x, max(white.y, white.z));
+    float path = 2.0 * FilmIndex * f.thickness * cos1;
+    // What SeriesOrder terms leave out, relative to the light, is at most
+    // 2 |C_{order+1}| / (1 − |x|) · (the largest |F| from (order+1) D on). Past kSeriesTailLimit (thin
+    // films near grazing incidence, |x| -> 1) the exact sum serves instead.
+    float left = 2.0 * (length(c_s) * pow(length(x_s), float(SeriesOrder)) * decay_s + length(c_p) * pow(length(x_p), float(SeriesOrder)) * decay_p)
+                 * fourier_tail_bound(row, float(SeriesOrder + 1) * path) / brightest;
+    if (!(left <= kSeriesTailLimit)) return false;
+
+    xyz = c0 * white;
+    for (int m = 1; m <= SeriesOrder; ++m) {
+        if (2.0 * (length(c_s) * decay_s + length(c_p) * decay_p) * fourier_tail_bound(row, float(m) * path) / brightest < kSeriesTermLimit) break;
+        vec3 re, im;
+        sensitivity_at(row, centre, float(m) * path, re, im);
+        vec2 c = c_s + c_p;
+        xyz += 2.0 * (c.x * re - c.y * im);
+        c_s = c_mul(c_s, x_s);
+        c_p = c_mul(c_p, x_p);
+    }
+    return true;
+}
+
+// One call of the exact sum (a second inlined copy of its loop costs llvmpipe dearly).
+vec4 fourier_film_colour(Film f, vec2 n2) {
+    vec3 xyz;
+    if (!fourier_film_xyz(f, n2, xyz)) xyz = exact_film_xyz(f, n2);
+    return vec4(xyz_to_srgb(xyz * Brightness), 1.0);
+}
+
+GLSLShader FresnelFourierFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        color = fourier_film_colour(film_at(fs_in.world_position, fs_in.normal, fs_in.uv), vec2(SubstrateIndex, SubstrateKappa));
+        fx_capture();
+    }
+}
+
+GLSLShader BubbleFourierFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        color = fourier_film_colour(film_at(fs_in.world_position, fs_in.normal, fs_in.uv), vec2(OuterIndex, 0.0));
+        fx_capture();
+    }
+}
+
 // Thickness from a colour (docs/plugins.md): the Plugins tab or `fxview plugin run
 // effects/spectral/thinfilm.fx ThicknessFromColour --set TargetColour=R,G,B` finds the thickness whose
 // interference colour at normal incidence has the target's chromaticity (Airy's exact reflectance),
@@ -410,3 +553,9 @@ technique Bubble { pass p0 { VertexShader = StandardVS; FragmentShader = BubbleF
 technique FabryPerot { pass p0 { VertexShader = StandardVS; FragmentShader = FabryPerotFS; } }
 technique MultiLayer { pass p0 { VertexShader = StandardVS; FragmentShader = MultiLayerFS; } }
 technique MultiLayerFaster { pass p0 { VertexShader = StandardVS; FragmentShader = MultiLayerFasterFS; } }
+technique FresnelFourier < string UIName = "Fresnel, Fourier series (fast)";
+                           string UIHelp = "FresnelExact's film as a short interference series with precomputed light x CMF transforms; indices independent of wavelength"; >
+    { pass p0 { VertexShader = StandardVS; FragmentShader = FresnelFourierFS; } }
+technique BubbleFourier < string UIName = "Bubble, Fourier series (fast)";
+                          string UIHelp = "Bubble's free film as a short interference series with precomputed light x CMF transforms"; >
+    { pass p0 { VertexShader = StandardVS; FragmentShader = BubbleFourierFS; } }

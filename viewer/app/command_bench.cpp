@@ -32,6 +32,7 @@ CommandRunner add_bench_command(CLI::App& app) {
         SceneOptions scene;
         int frames = 10;
         bool json = false;
+        std::vector<std::string> techniques;
     };
     auto o = std::make_shared<Options>();
     o->scene.size = "1024x768";
@@ -39,6 +40,9 @@ CommandRunner add_bench_command(CLI::App& app) {
     add_scene_options(*command, o->scene);
     command->add_option("--frames", o->frames, "Measured frames per technique (after 2 warm-up frames)")->check(CLI::Range(1, 10000));
     command->add_flag("--json", o->json, "Print one JSON object per technique");
+    command->add_option("--techniques", o->techniques,
+                        "Techniques to measure, in this order (comma-separated); the speed-up column is relative to the first")
+        ->delimiter(',');
     return [o] {
         const RenderRequest request = to_render_request(o->scene);
         if (request.effect.path.empty()) throw UsageError("bench needs an effect file");
@@ -50,13 +54,17 @@ CommandRunner add_bench_command(CLI::App& app) {
         const auto context = context::create_context(context_options);
         const auto info = context::query_context_info();
         const auto session = open_effect_session(request.effect);
-        const std::vector<std::string> techniques =
-            request.effect.technique.empty() ? technique_names(request.effect) : std::vector<std::string>{request.effect.technique};
+        if (!o->techniques.empty() && !request.effect.technique.empty()) throw UsageError("bench: give --technique or --techniques, not both");
+        const std::vector<std::string> techniques = !o->techniques.empty()           ? o->techniques
+                                                    : request.effect.technique.empty() ? technique_names(request.effect)
+                                                                                       : std::vector<std::string>{request.effect.technique};
+        double first_wall = 0;  // the speed-up's reference: the first technique's median
         gl::RenderTarget target({request.width, request.height, 1, request.samples});
         gl::Query query = gl::create_query(GL_TIME_ELAPSED);
         if (!o->json)
-            std::printf("%s, %dx%d, %s\n\n| technique | wall ms (median) | FPS (wall) | GPU timer ms (median) |\n| --- | --- | --- | --- |\n",
-                        info.renderer.c_str(), request.width, request.height, request.effect.path.c_str());
+            std::printf("%s, %dx%d, %s\n\n| technique | wall ms (median) | FPS (wall) | GPU timer ms (median) | speed-up vs %s |\n"
+                        "| --- | --- | --- | --- | --- |\n",
+                        info.renderer.c_str(), request.width, request.height, request.effect.path.c_str(), techniques.front().c_str());
         for (const auto& technique : techniques) {
             session->select_technique(technique);
             std::vector<double> gpu_ms, wall_ms;
@@ -74,14 +82,17 @@ CommandRunner add_bench_command(CLI::App& app) {
                 wall_ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
             }
             const double gpu = median(gpu_ms), wall = median(wall_ms);
+            if (first_wall == 0) first_wall = wall;
+            const double speed_up = wall > 0 ? first_wall / wall : 0.0;
             if (o->json)
                 std::cout << nlohmann::json{{"technique", technique}, {"renderer", info.renderer}, {"width", request.width},
                                             {"height", request.height}, {"frames", o->frames}, {"gpu_ms_median", gpu},
-                                            {"wall_ms_median", wall}, {"fps_wall", wall > 0 ? 1000.0 / wall : 0.0}}
+                                            {"wall_ms_median", wall}, {"fps_wall", wall > 0 ? 1000.0 / wall : 0.0},
+                                            {"speed_up_vs_first", speed_up}}
                                  .dump()
                           << "\n";
             else
-                std::printf("| %s | %.3f | %.2f | %.3f |\n", technique.c_str(), wall, wall > 0 ? 1000.0 / wall : 0.0, gpu);
+                std::printf("| %s | %.3f | %.2f | %.3f | %.1fx |\n", technique.c_str(), wall, wall > 0 ? 1000.0 / wall : 0.0, gpu, speed_up);
         }
         return 0;
     };

@@ -20,6 +20,7 @@ namespace fxview::optics {
 struct FilmSeries {
     std::vector<Complex> c;  // c[0] = C0 (real), c[m] = C_m
     double cos_film = 1;     // cos θ1 in the film: the path difference is 2 n1 d cos θ1
+    Complex ratio{0.0, 0.0}; // x = r10 r12: C_{m+1} = C_m x for m >= 1
 };
 
 // Coefficients up to `order` for one polarisation. Throws Error when the film is evanescent.

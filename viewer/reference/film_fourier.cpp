@@ -1,11 +1,14 @@
 #include "reference/film_fourier.hpp"
 
+#include <algorithm>
+
 #include "optics/film_series.hpp"
+#include "spectral/fourier_table.hpp"
 #include "optics/thin_film.hpp"
 
 namespace fxview::reference {
 
-spectral::Vec3 film_xyz_fourier(const spectral::SensitivityTransform& transform, const Film& film, int order) {
+spectral::Vec3 film_xyz_fourier(const spectral::SensitivityTransform& transform, const SingleFilm& film, int order) {
     spectral::Vec3 xyz{};
     for (const auto polarisation : {optics::Polarisation::S, optics::Polarisation::P}) {
         const optics::FilmSeries series = optics::film_series(film.outer, film.index, film.substrate, film.cos_outer, polarisation, order);
@@ -20,7 +23,44 @@ spectral::Vec3 film_xyz_fourier(const spectral::SensitivityTransform& transform,
     return xyz;
 }
 
-spectral::Vec3 film_xyz_exact(const spectral::Observer& observer, const spectral::Spectrum& light, const Film& film,
+std::optional<spectral::Vec3> film_xyz_fourier_table(const spectral::PackedTexture& table, int observer_row, int light,
+                                                     const SingleFilm& film, const SeriesTechnique& technique) {
+    const double ratio = film.outer / film.index;
+    if ((1.0 - ratio * ratio) + ratio * ratio * film.cos_outer * film.cos_outer <= 0.0) return std::nullopt;
+    const int order = std::max(technique.order, 1);
+    const optics::FilmSeries s = optics::film_series(film.outer, film.index, film.substrate, film.cos_outer, optics::Polarisation::S, order);
+    const optics::FilmSeries p = optics::film_series(film.outer, film.index, film.substrate, film.cos_outer, optics::Polarisation::P, order);
+    // Where |x| = 1 (grazing incidence) every C_m is 0: nothing is left to bound.
+    const auto decay = [](const optics::FilmSeries& series) { return std::abs(series.ratio) < 1.0 ? 1.0 / (1.0 - std::abs(series.ratio)) : 0.0; };
+    const double decay_s = decay(s), decay_p = decay(p);
+    const auto coefficient = [&](int m) {
+        return std::pair{technique.weight_s * s.c[static_cast<size_t>(m)], technique.weight_p * p.c[static_cast<size_t>(m)]};
+    };
+    const double path = 2.0 * film.index * film.thickness_nm * s.cos_film;
+    const spectral::ComplexXyz white = spectral::fourier_lookup(table, observer_row, light, 0.0);
+    const double brightest = std::max({white[0].real(), white[1].real(), white[2].real()});
+    // What terms m, m+1, ... can add at most, relative to the light: 2 Σ_{k >= m} |C_k| max|F(k D)|
+    // <= 2 |C_m| / (1 − |x|) · (the largest |F| from m D on).
+    const auto left_from = [&](int m) {
+        const auto [c_s, c_p] = coefficient(std::min(m, order));
+        const bool beyond = m > order;  // C_{order+1} = C_order x
+        const double scale_s = beyond ? std::abs(s.ratio) : 1.0, scale_p = beyond ? std::abs(p.ratio) : 1.0;
+        return 2.0 * (std::abs(c_s) * scale_s * decay_s + std::abs(c_p) * scale_p * decay_p) *
+               spectral::fourier_tail_bound(table, observer_row, light, m * path) / brightest;
+    };
+    if (!(left_from(order + 1) <= kSeriesTailLimit)) return std::nullopt;
+    spectral::Vec3 xyz{};
+    for (size_t i = 0; i < 3; ++i) xyz[i] = (technique.weight_s * s.c[0].real() + technique.weight_p * p.c[0].real()) * white[i].real();
+    for (int m = 1; m <= order; ++m) {
+        if (left_from(m) < kSeriesTermLimit) break;
+        const auto [c_s, c_p] = coefficient(m);
+        const spectral::ComplexXyz transform = spectral::fourier_lookup(table, observer_row, light, m * path);
+        for (size_t i = 0; i < 3; ++i) xyz[i] += 2.0 * ((c_s + c_p) * transform[i]).real();
+    }
+    return xyz;
+}
+
+spectral::Vec3 film_xyz_exact(const spectral::Observer& observer, const spectral::Spectrum& light, const SingleFilm& film,
                               const spectral::Integration& range) {
     const optics::Stack stack{film.outer, {{film.index, film.thickness_nm}}, film.substrate};
     double luminance = 0;

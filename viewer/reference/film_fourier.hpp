@@ -3,20 +3,37 @@
 // error study (`fxview spectra film-error`, docs/thin-films.md) compares. XYZ relative to the light
 // (a perfect reflector has Y = 1), unpolarised (the mean of s and p).
 #pragma once
+#include <optional>
+
 #include "optics/fresnel.hpp"
+#include "spectral/packing.hpp"
 #include "spectral/sensitivity_transform.hpp"
 
 namespace fxview::reference {
 
-struct Film {
+struct SingleFilm {
     double outer = 1.0, index = 1.33;   // lossless outer medium and film
     optics::Complex substrate{1.0, 0.0};  // n + iκ
     double thickness_nm = 300;
     double cos_outer = 1.0;  // cos θ0 of the light in the outer medium
 };
 
-spectral::Vec3 film_xyz_fourier(const spectral::SensitivityTransform& transform, const Film& film, int order);
-spectral::Vec3 film_xyz_exact(const spectral::Observer& observer, const spectral::Spectrum& light, const Film& film,
+spectral::Vec3 film_xyz_fourier(const spectral::SensitivityTransform& transform, const SingleFilm& film, int order);
+
+// The shipped techniques' rule (thinfilm.fx FresnelFourier / BubbleFourier): at most `order` terms,
+// each F(m D) looked up in the GPU's table (spectral/fourier_table.hpp, normalised by 1 / Σ ȳ), the
+// terms stopped once a bound on all that is left, relative to the light's largest channel, falls
+// below kSeriesTermLimit. Empty where the series does not serve: no series (the film past its
+// critical angle), or `order` terms would leave more than kSeriesTailLimit unaccounted (thin films
+// near grazing incidence, |x| -> 1); the technique then integrates exactly.
+struct SeriesTechnique {
+    int order = 16;
+    double weight_s = 0.5, weight_p = 0.5;  // polarisation of the light
+};
+constexpr double kSeriesTailLimit = 1e-3, kSeriesTermLimit = 1e-5;
+std::optional<spectral::Vec3> film_xyz_fourier_table(const spectral::PackedTexture& table, int observer_row, int light,
+                                                     const SingleFilm& film, const SeriesTechnique& technique);
+spectral::Vec3 film_xyz_exact(const spectral::Observer& observer, const spectral::Spectrum& light, const SingleFilm& film,
                               const spectral::Integration& range = {});
 
 }  // namespace fxview::reference

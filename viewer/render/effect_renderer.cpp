@@ -85,7 +85,7 @@ void EffectRenderer::render(const scene::Scene& scene, const effect::CompiledTec
         for (const auto& uniform : pass.uniforms) {
             if (uniform.texture_unit < 0) continue;
             const effect::Parameter& sampler = *uniform.parameter;
-            const GpuTexture* texture = resources.find(sampler.texture);
+            const GpuTexture* texture = resources.acquire(sampler.texture);
             if (!texture)
                 throw effect::EffectError(sampler.where, "sampler " + sampler.name +
                                                              " has no texture (give it a ResourceName, a sampler_state "

@@ -7,6 +7,7 @@
 
 #include "core/text.hpp"
 #include "gl/texture_upload.hpp"
+#include "spectral/fourier_table.hpp"
 #include "spectral/library.hpp"
 #include "texture/texture_file.hpp"
 
@@ -99,26 +100,18 @@ std::string spectral_library_path() {
     return std::string(override_dir ? override_dir : FXVIEW_SOURCE_SPECTRA_DIR) + "/library.txt";
 }
 
-void EffectResources::generate(const effect::TextureResource& resource) {
+namespace {
+
+spectral::PackedTexture make_generated(const effect::TextureResource& resource) {
     const std::string& what = resource.files[0];
     const texture::PixelFormat format = storage_format(resource.storage, texture::PixelFormat::RGBA32F);
-    spectral::PackedTexture packed;
-    if (what == "spectral:cmf")
-        packed = spectral::cmf_texture(spectral::load_observer("1931"), spectral::load_observer("1964"), format);
-    else if (what == "spectral:library")
-        packed = spectral::pack_spectra(spectral::load_library(spectral_library_path()).spectra(), format);
-    else
-        throw effect::EffectError(resource.where, "unknown generated texture '" + what + "' (spectral:cmf or spectral:library)");
-    GpuTexture gpu;
-    gpu.texture = gl::upload_texture(packed.texture, {false, false});
-    gpu.type = packed.texture.type;
-    gpu.format = packed.texture.format;
-    gpu.width = packed.texture.width();
-    gpu.height = packed.texture.height();
-    gpu.source = what;
-    textures_.emplace(resource.name, std::move(gpu));
-    generated_.emplace(resource.name, std::move(packed));
+    if (what == "spectral:cmf") return spectral::cmf_texture(spectral::load_observer("1931"), spectral::load_observer("1964"), format);
+    if (what == "spectral:library") return spectral::pack_spectra(spectral::load_library(spectral_library_path()).spectra(), format);
+    return spectral::fourier_table(spectral::load_library(spectral_library_path()).spectra(), spectral::load_observer("1931"),
+                                   spectral::load_observer("1964"));
 }
+
+}  // namespace
 
 const texture::TextureData* EffectResources::cpu_copy(const std::string& texture_name) const {
     const auto found = cpu_copies_.find(texture_name);
@@ -126,8 +119,26 @@ const texture::TextureData* EffectResources::cpu_copy(const std::string& texture
 }
 
 const spectral::PackedTexture* EffectResources::generated(const std::string& texture_name) const {
-    const auto found = generated_.find(texture_name);
-    return found == generated_.end() ? nullptr : &found->second;
+    const std::lock_guard lock(generated_mutex_);
+    if (const auto found = generated_.find(texture_name); found != generated_.end()) return &found->second;
+    const auto resource = generated_resources_.find(texture_name);
+    if (resource == generated_resources_.end()) return nullptr;
+    return &generated_.emplace(texture_name, make_generated(*resource->second)).first->second;
+}
+
+const GpuTexture* EffectResources::acquire(const std::string& texture_name) {
+    if (!textures_.count(texture_name) && generated_resources_.count(texture_name)) {
+        const spectral::PackedTexture& packed = *generated(texture_name);
+        GpuTexture gpu;
+        gpu.texture = gl::upload_texture(packed.texture, {false, false});
+        gpu.type = packed.texture.type;
+        gpu.format = packed.texture.format;
+        gpu.width = packed.texture.width();
+        gpu.height = packed.texture.height();
+        gpu.source = generated_resources_.at(texture_name)->files[0];
+        textures_.emplace(texture_name, std::move(gpu));
+    }
+    return find(texture_name);
 }
 
 EffectResources::EffectResources(const effect::Effect& effect, const effect::ParameterValues& values,
@@ -137,7 +148,17 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
         if (resource.render_target) continue;
         try {
             if (resource.files.size() == 1 && resource.files[0].rfind("spectral:", 0) == 0) {
-                generate(resource);
+                // Checked now, made when a pass first samples it (acquire) or a CPU reference reads it
+                // (generated): the thin-film transforms take a fifth of a second that techniques not
+                // using them should not pay.
+                const std::string& what = resource.files[0];
+                if (what != "spectral:cmf" && what != "spectral:library" && what != "spectral:fourier")
+                    throw effect::EffectError(resource.where, "unknown generated texture '" + what +
+                                                                  "' (spectral:cmf, spectral:library or spectral:fourier)");
+                // Float only: the transforms are signed and need more than 8 bits.
+                if (what == "spectral:fourier" && storage_format(resource.storage, texture::PixelFormat::RGBA32F) != texture::PixelFormat::RGBA32F)
+                    throw effect::EffectError(resource.where, "spectral:fourier is stored as 32F only");
+                generated_resources_.emplace(resource.name, &resource);
                 continue;
             }
             std::vector<std::string> paths;

@@ -2,10 +2,12 @@
 // its render targets (sized from the frame, recreated when the frame size changes) and sampler
 // objects. Texture files are searched next to the effect, then in the texture folders.
 // ResourceName "spectral:cmf" and "spectral:library" are generated: the CIE colour matching
-// functions (colord-data) and the packed spectra of spectra/library.txt ($FXVIEW_SPECTRA_DIR).
+// functions (colord-data) and the packed spectra of spectra/library.txt ($FXVIEW_SPECTRA_DIR);
+// "spectral:fourier" the thin-film sensitivity transforms of those spectra (spectral/fourier_table.hpp).
 #pragma once
 #include <cstdint>
 #include <map>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -35,17 +37,19 @@ public:
 
     // Makes every render target match the frame size (times its ViewportRatio, or its Dimensions).
     void fit_render_targets(int frame_width, int frame_height);
-    const GpuTexture* find(const std::string& texture_name) const;
+    const GpuTexture* find(const std::string& texture_name) const;  // nullptr for a generated one not yet acquired
+    // find(), generating a generated texture on first use.
+    const GpuTexture* acquire(const std::string& texture_name);
     GLuint sampler(const effect::SamplerState& state);
     const std::map<std::string, GpuTexture>& textures() const { return textures_; }
     const effect::Effect& effect() const { return effect_; }
-    // CPU copies of generated textures ("spectral:cmf", "spectral:library"), for CPU references.
+    // CPU copies of generated textures ("spectral:cmf", "spectral:library", "spectral:fourier"), for
+    // CPU references (made on first use; thread-safe); nullptr for other names.
     const spectral::PackedTexture* generated(const std::string& texture_name) const;
     // CPU copies of file textures exactly as uploaded (after format conversion), for CPU references.
     const texture::TextureData* cpu_copy(const std::string& texture_name) const;
 
 private:
-    void generate(const effect::TextureResource& resource);
     // Each render target's size for a frame, checked (with the file textures) against the effect's
     // budgets before anything is allocated; EffectError at the target's declaration.
     std::vector<glm::ivec2> render_target_sizes(int frame_width, int frame_height) const;
@@ -53,7 +57,9 @@ private:
     std::int64_t file_texture_bytes_ = 0;  // what the effect's file textures store
     const effect::Effect& effect_;
     std::map<std::string, GpuTexture> textures_;
-    std::map<std::string, spectral::PackedTexture> generated_;
+    std::map<std::string, const effect::TextureResource*> generated_resources_;
+    mutable std::mutex generated_mutex_;  // CPU references read generated textures from several threads
+    mutable std::map<std::string, spectral::PackedTexture> generated_;  // made on first use
     std::map<std::string, texture::TextureData> cpu_copies_;
     std::map<std::vector<GLenum>, gl::Sampler> samplers_;
 };
