@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "optics/film_series.hpp"
 #include "optics/grating.hpp"
+#include "optics/prepared_stack.hpp"
 #include "optics/thesis_models.hpp"
 #include "optics/thin_film.hpp"
 
@@ -259,4 +260,29 @@ TEST_CASE("the film's cosine series (Belcour-Barla) sums to the transfer-matrix 
             }
     }
     CHECK_THROWS_AS(film_series(1.5, 1.0, {1.5, 0.0}, 0.2, Polarisation::S, 4), fxview::Error);  // evanescent film
+}
+
+TEST_CASE("a prepared stack: the lossless shortcut and shared phases give the general matrices' values") {
+    // reflectances() multiplies real 4-number products and shares cos δ, sin δ between repeated
+    // layers when every layer is lossless; response() always multiplies general complex matrices.
+    // Both are the same characteristic-matrix method, so they agree to double rounding.
+    std::vector<Stack> stacks;
+    for (const int layers : {1, 2, 7, 16}) {
+        Stack periodic{1.0, {}, Complex(1.52, 0.0)};
+        for (int j = 1; j <= layers; ++j) periodic.layers.push_back({j % 2 == 1 ? Complex(2.35, 0.0) : Complex(1.38, 0.0), j % 2 == 1 ? 61.0 : 99.6});
+        stacks.push_back(periodic);
+    }
+    stacks.push_back(Stack{1.0, {{Complex(1.33, 0.0), 420.0}, {Complex(1.7, 0.0), 15.0}, {Complex(1.33, 0.0), 420.0}}, Complex(0.27, 2.9)});
+    stacks.push_back(Stack{1.0, {{Complex(1.5, 0.4), 80.0}, {Complex(2.0, 0.0), 120.0}}, Complex(1.5, 0.0)});  // absorbing layer
+    stacks.push_back(Stack{1.6, {{Complex(1.2, 0.0), 100.0}, {Complex(1.4, 0.0), 60.0}}, Complex(1.5, 0.0)});  // evanescent past 48.6°
+    for (const Stack& stack : stacks)
+        for (const double cos0 : {1.0, 0.7, 0.31, 0.05})
+            for (const double wavelength : {380.0, 523.0, 777.0}) {
+                const PreparedStack prepared(stack, cos0);
+                const auto [s, p] = prepared.reflectances(wavelength);
+                CAPTURE(stack.layers.size());
+                CAPTURE(cos0);
+                CHECK(s == doctest::Approx(prepared.response(wavelength, Polarisation::S).reflectance).epsilon(1e-12));
+                CHECK(p == doctest::Approx(prepared.response(wavelength, Polarisation::P).reflectance).epsilon(1e-12));
+            }
 }

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <thread>
 
 #include "app/commands.hpp"
 #include "app/gpu_cpu_compare.hpp"
@@ -25,13 +26,47 @@ double median(std::vector<double> values) {
     return values.empty() ? 0.0 : values[values.size() / 2];
 }
 
+std::vector<std::string> chosen_techniques(const RenderRequest& request, const std::vector<std::string>& listed) {
+    if (!listed.empty()) return listed;
+    return request.effect.technique.empty() ? technique_names(request.effect) : std::vector<std::string>{request.effect.technique};
+}
+
+// `--compare`: the wall time of a whole GPU-vs-CPU comparison per technique (context, effect, one
+// frame, the CPU reference of every covered pixel on all cores), the median of `runs`.
+int bench_compare(const RenderRequest& request, const std::vector<std::string>& listed, int runs, bool json) {
+    const std::vector<std::string> techniques = chosen_techniques(request, listed);
+    if (!json)
+        std::printf("fxview compare, %dx%d, %s, %u hardware threads\n\n| technique | compare s (median of %d) | pixels | pass |\n"
+                    "| --- | --- | --- | --- |\n",
+                    request.width, request.height, request.effect.path.c_str(), std::thread::hardware_concurrency(), runs);
+    for (const auto& technique : techniques) {
+        std::vector<double> seconds;
+        CompareResult result;
+        for (int run = 0; run < runs; ++run) {
+            const auto start = std::chrono::steady_clock::now();
+            result = compare_technique(request, technique, {});
+            seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        }
+        const double time = median(seconds);
+        if (json)
+            std::cout << nlohmann::json{{"technique", technique}, {"width", request.width}, {"height", request.height},
+                                        {"compare_s_median", time}, {"runs", runs}, {"pixels", result.pixels}, {"pass", result.pass}}
+                             .dump()
+                      << "\n";
+        else
+            std::printf("| %s | %.2f | %ld | %s |\n", technique.c_str(), time, result.pixels,
+                        !result.has_reference ? "no reference" : result.pass ? "yes" : "NO");
+    }
+    return 0;
+}
+
 }  // namespace
 
 CommandRunner add_bench_command(CLI::App& app) {
     struct Options {
         SceneOptions scene;
         int frames = 10;
-        bool json = false;
+        bool json = false, compare = false;
         std::vector<std::string> techniques;
     };
     auto o = std::make_shared<Options>();
@@ -43,9 +78,15 @@ CommandRunner add_bench_command(CLI::App& app) {
     command->add_option("--techniques", o->techniques,
                         "Techniques to measure, in this order (comma-separated); the speed-up column is relative to the first")
         ->delimiter(',');
-    return [o] {
+    command->add_flag("--compare", o->compare,
+                      "Time `fxview compare` of each technique instead (one GPU frame and its CPU reference on all cores), "
+                      "at the size given (default 256x256 here)");
+    return [o, command] {
+        if (o->compare && command->get_option("--size")->count() == 0) o->scene.size = "256x256";
         const RenderRequest request = to_render_request(o->scene);
         if (request.effect.path.empty()) throw UsageError("bench needs an effect file");
+        if (!o->techniques.empty() && !request.effect.technique.empty()) throw UsageError("bench: give --technique or --techniques, not both");
+        if (o->compare) return bench_compare(request, o->techniques, o->frames, o->json);
         context::ContextOptions context_options;
         context_options.backend = request.backend;
         context_options.window_width = request.width;
@@ -54,10 +95,7 @@ CommandRunner add_bench_command(CLI::App& app) {
         const auto context = context::create_context(context_options);
         const auto info = context::query_context_info();
         const auto session = open_effect_session(request.effect);
-        if (!o->techniques.empty() && !request.effect.technique.empty()) throw UsageError("bench: give --technique or --techniques, not both");
-        const std::vector<std::string> techniques = !o->techniques.empty()           ? o->techniques
-                                                    : request.effect.technique.empty() ? technique_names(request.effect)
-                                                                                       : std::vector<std::string>{request.effect.technique};
+        const std::vector<std::string> techniques = chosen_techniques(request, o->techniques);
         double first_wall = 0;  // the speed-up's reference: the first technique's median
         gl::RenderTarget target({request.width, request.height, 1, request.samples});
         gl::Query query = gl::create_query(GL_TIME_ELAPSED);

@@ -1,58 +1,22 @@
 #include "optics/thin_film.hpp"
+#include "optics/prepared_stack.hpp"
 
-#include <array>
 #include <numbers>
 
 namespace fxview::optics {
 namespace {
-
-using Matrix = std::array<Complex, 4>;  // row-major 2x2
-
-Matrix multiply(const Matrix& a, const Matrix& b) {
-    return {a[0] * b[0] + a[1] * b[2], a[0] * b[1] + a[1] * b[3], a[2] * b[0] + a[3] * b[2], a[2] * b[1] + a[3] * b[3]};
-}
-
-Complex admittance(Complex index, Complex cos_theta, Polarisation polarisation) {
-    return polarisation == Polarisation::S ? index * cos_theta : index / cos_theta;
-}
 
 double phase_factor(double wavelength_nm) { return 2.0 * std::numbers::pi / wavelength_nm; }
 
 }  // namespace
 
 Response transfer_matrix(const Stack& stack, double wavelength_nm, double cos_outer, Polarisation polarisation) {
-    // Grazing incidence reflects everything (r -> -1 in both polarisations) as soon as the stack has
-    // any interface; an index-matched stack has none and transmits everything. The p admittance
-    // n / cos would divide by zero there.
-    if (cos_outer <= 0.0) {
-        bool matched = stack.substrate == Complex(stack.outer);
-        for (const Layer& layer : stack.layers) matched = matched && layer.index == Complex(stack.outer);
-        return matched ? Response{0.0, 1.0} : Response{1.0, 0.0};
-    }
-    const Complex eta0 = admittance(stack.outer, cos_outer, polarisation);
-    Matrix product{1.0, 0.0, 0.0, 1.0};
-    for (const Layer& layer : stack.layers) {
-        const Complex cos_j = refracted_cos(stack.outer, layer.index, cos_outer);
-        const Complex eta = admittance(layer.index, cos_j, polarisation);
-        // With n̂ = n + iκ and fields ~ exp(i(kz − ωt)) a layer's phase thickness has Im δ ≥ 0 and the
-        // matrix carries −i (Born & Wolf's sign); Macleod's +i belongs to n − iκ.
-        const Complex delta = phase_factor(wavelength_nm) * layer.index * layer.thickness_nm * cos_j;
-        const Complex c = std::cos(delta), s = std::sin(delta);
-        const Complex minus_i(0.0, -1.0);
-        product = multiply(product, {c, minus_i * s / eta, minus_i * eta * s, c});
-    }
-    const Complex eta_sub = admittance(stack.substrate, refracted_cos(stack.outer, stack.substrate, cos_outer), polarisation);
-    const Complex b = product[0] + product[1] * eta_sub, c = product[2] + product[3] * eta_sub;
-    const Complex denominator = eta0 * b + c;
-    Response response;
-    response.reflectance = std::norm((eta0 * b - c) / denominator);
-    response.transmittance = 4.0 * eta0.real() * eta_sub.real() / std::norm(denominator);
-    return response;
+    return PreparedStack(stack, cos_outer).response(wavelength_nm, polarisation);
 }
 
 double transfer_matrix_reflectance(const Stack& stack, double wavelength_nm, double cos_outer) {
-    return 0.5 * (transfer_matrix(stack, wavelength_nm, cos_outer, Polarisation::S).reflectance +
-                  transfer_matrix(stack, wavelength_nm, cos_outer, Polarisation::P).reflectance);
+    const auto [s, p] = PreparedStack(stack, cos_outer).reflectances(wavelength_nm);
+    return 0.5 * (s + p);
 }
 
 double airy_reflectance(double n0, double n1, double n2, double thickness_nm, double wavelength_nm, double cos0,

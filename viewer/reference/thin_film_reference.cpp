@@ -10,8 +10,10 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numbers>
 
+#include "optics/prepared_stack.hpp"
 #include "optics/thesis_models.hpp"
 #include "optics/thin_film.hpp"
 #include "reference/film_fourier.hpp"
@@ -76,13 +78,33 @@ Film bumped_film(const ShadingInput& in, const ReferenceContext& c) {
     return f;
 }
 
-using Reflectance = std::function<double(const Film&, double nm)>;
+// A film's reflectance over the wavelength, set up once per pixel: what does not depend on the
+// wavelength (a stack's angles and admittances) is worked out before the spectral loop.
+using AtWavelength = std::function<double(double nm)>;
+using Reflectance = std::function<AtWavelength(const Film&)>;
+
+template <typename Model>
+Reflectance per_wavelength(Model model) {
+    return [model](const Film& f) { return AtWavelength([model, f](double nm) { return model(f, nm); }); };
+}
+
+// Unpolarised reflectance of a stack by characteristic matrices (optics::PreparedStack).
+template <typename StackOf>
+Reflectance by_matrices(StackOf stack_of) {
+    return [stack_of](const Film& f) {
+        return AtWavelength([prepared = std::make_shared<const optics::PreparedStack>(stack_of(f), f.cos0)](double nm) {
+            const auto [s, p] = prepared->reflectances(nm);
+            return 0.5 * (s + p);
+        });
+    };
+}
 
 // The light spectrum times the film's reflectance, integrated against the CMFs.
 std::array<double, 4> film_colour(const Film& f, const ReferenceContext& c, const Reflectance& reflectance) {
     const SpectralSetup s = spectral_setup(c);
     const int light = static_cast<int>(c.number("LightSpectrum"));
-    return to_rgba(integrate(s, false, [&](int nm) { return spectral::packed_value(*s.spectra, light, nm) * reflectance(f, nm); }), s.mapping);
+    const AtWavelength at = reflectance(f);
+    return to_rgba(integrate(s, false, [&](int nm) { return spectral::packed_value(*s.spectra, light, nm) * at(nm); }), s.mapping);
 }
 
 // The phase's float rounding is independent from wavelength to wavelength, so the colour error
@@ -234,28 +256,28 @@ Reference fourier_reference(bool free_film) {
 
 std::map<std::string, Reference> thin_film_references() {
     std::map<std::string, Reference> all;
-    Reference path = make([](const Film& f, double nm) {
+    Reference path = make(per_wavelength([](const Film& f, double nm) {
         return optics::thesis::path_difference(f.n0, f.n1, f.thickness, nm, f.cos_light, f.cos_view).intensity;
-    }, 5e-5, std::string(kPhaseWhy) + "; pixels where a wavelength sits on frac()'s jump get that wavelength's share as slack");
+    }), 5e-5, std::string(kPhaseWhy) + "; pixels where a wavelength sits on frac()'s jump get that wavelength's share as slack");
     path.slack = [phase = path.slack](const ShadingInput& in, const ReferenceContext& c) {
         return phase(in, c) + path_difference_slack(in, c);
     };
     all.emplace("PathDifference", std::move(path));
 
-    const Reflectance durikovic = [](const Film& f, double nm) { return optics::thesis::durikovic(f.n0, f.n1, f.n2, f.thickness, nm, f.cos0); };
+    const Reflectance durikovic =
+        per_wavelength([](const Film& f, double nm) { return optics::thesis::durikovic(f.n0, f.n1, f.n2, f.thickness, nm, f.cos0); });
     all.emplace("Fresnel", make(durikovic, 5e-5, kPhaseWhy));
     all.emplace("FresnelFaster", make(durikovic, 5e-5, kPhaseWhy));
-    all.emplace("FresnelAlternative", make([](const Film& f, double nm) {
+    all.emplace("FresnelAlternative", make(per_wavelength([](const Film& f, double nm) {
         return optics::thesis::alternative(f.n0, f.n1, f.n2, f.thickness, nm, f.cos0);
-    }, 5e-5, kPhaseWhy));
-    all.emplace("FabryPerot", make([](const Film& f, double nm) {
+    }), 5e-5, kPhaseWhy));
+    all.emplace("FabryPerot", make(per_wavelength([](const Film& f, double nm) {
         return optics::thesis::fabry_perot(f.n0, f.n1, f.thickness, nm, f.cos0);
-    }, 1e-4, kFinesseWhy));
+    }), 1e-4, kFinesseWhy));
 
     // Exact models against characteristic matrices.
-    const Reflectance single_film = [](const Film& f, double nm) {
-        return optics::transfer_matrix_reflectance(optics::Stack{f.n0, {{f.n1, f.thickness}}, optics::Complex(f.n2, f.kappa)}, nm, f.cos0);
-    };
+    const Reflectance single_film =
+        by_matrices([](const Film& f) { return optics::Stack{f.n0, {{f.n1, f.thickness}}, optics::Complex(f.n2, f.kappa)}; });
     all.emplace("FresnelExact", make(single_film, 5e-5, kPhaseWhy));
     // Bump mapping (eq. 69): the same film under a wave-tilted normal, thickened at the crests.
     Reference bump = make(single_film, 5e-5, kPhaseWhy, bumped_film);
@@ -279,13 +301,15 @@ std::map<std::string, Reference> thin_film_references() {
         return slack + phase(in, c);
     };
     all.emplace("BumpFresnelExact", std::move(bump));
-    all.emplace("Bubble", make([](const Film& f, double nm) {
-        return optics::transfer_matrix_reflectance(optics::Stack{f.n0, {{f.n1, f.thickness}}, f.n0}, nm, f.cos0);
-    }, 1e-4, kFinesseWhy));
-    all.emplace("MultiLayer", make([](const Film& f, double nm) { return optics::transfer_matrix_reflectance(stack_at(f, nm), nm, f.cos0); },
-                                   5e-5, kPhaseWhy));
-    all.emplace("MultiLayerFaster",
-                make([](const Film& f, double nm) { return optics::transfer_matrix_reflectance(f.stack, nm, f.cos0); }, 5e-5, kPhaseWhy));
+    all.emplace("Bubble", make(by_matrices([](const Film& f) { return optics::Stack{f.n0, {{f.n1, f.thickness}}, f.n0}; }), 1e-4, kFinesseWhy));
+    // With dispersion the indices, and so the angles, change with the wavelength: one stack per nm.
+    const Reflectance fixed_stack = by_matrices([](const Film& f) { return f.stack; });
+    const Reflectance dispersive_stack =
+        per_wavelength([](const Film& f, double nm) { return optics::transfer_matrix_reflectance(stack_at(f, nm), nm, f.cos0); });
+    all.emplace("MultiLayer", make([fixed_stack, dispersive_stack](const Film& f) {
+        return f.dispersion_a == 0.0 && f.dispersion_b == 0.0 ? fixed_stack(f) : dispersive_stack(f);
+    }, 5e-5, kPhaseWhy));
+    all.emplace("MultiLayerFaster", make(fixed_stack, 5e-5, kPhaseWhy));
     all.emplace("FresnelFourier", fourier_reference(false));
     all.emplace("BubbleFourier", fourier_reference(true));
     return all;
