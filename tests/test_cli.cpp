@@ -10,6 +10,9 @@
 #include <algorithm>
 #include <array>
 #include <iterator>
+#include <cmath>
+#include <map>
+#include <numbers>
 #include <cstdint>
 #include <tuple>
 #include <cstdio>
@@ -524,5 +527,61 @@ TEST_CASE("fit and brdf-grid reject bad input: exit 2 for arguments, 1 naming fi
         CAPTURE(dims);
         CHECK(m.exit_code == 1);
         CHECK(m.err.find("dims.binary: not a MERL BRDF") != std::string::npos);
+    }
+}
+
+// BRDF Explorer's `.brdf` format (issue #15, item 1), with test files written for fxview in that format.
+TEST_CASE(".brdf files load as effects: check, list with ranges and defaults, render, and the exact Lambert value") {
+    const std::string dir = std::string(FXVIEW_TEST_EFFECTS) + "/brdf/";
+    for (const char* name : {"lambert.brdf", "phong_old_dialect.brdf"}) {
+        CAPTURE(name);
+        const Result check = run("check " + dir + name);
+        CHECK(check.exit_code == 0);
+        const Result listed = run("list --json " + dir + name);
+        REQUIRE(listed.exit_code == 0);
+        const auto parameters = nlohmann::json::parse(listed.out)["parameters"];
+        bool found = false;
+        for (const auto& p : parameters)
+            if (p["name"] == "scale" || p["name"] == "n") {
+                found = true;
+                // The .brdf's own line is where the parameter is declared.
+                CHECK(p["location"].get<std::string>().find(std::string(name) + ":") != std::string::npos);
+                CHECK(p["min"].get<double>() == (p["name"] == "n" ? 1.0 : 0.0));
+                CHECK(p["max"].get<double>() == (p["name"] == "n" ? 1000.0 : 2.0));
+                CHECK(p["default"].get<double>() == (p["name"] == "n" ? 40.0 : 1.0));
+            }
+        CHECK(found);
+        const std::string out = temp_path(std::string(name) + ".pfm");
+        CHECK(run("render " + dir + name + " --size 32x32 --out " + out).exit_code == 0);
+    }
+    // Lambert under the default light: f = reflectance / π, times E = 3 and n·l at the sphere's
+    // centre, where n = +z and the light at (2, 2, 3) lies along (1, 1, 1): n·l = 1/√3.
+    const Result pick = run("pick " + dir + "lambert.brdf --size 64x64 --at 32,32 --json");
+    REQUIRE(pick.exit_code == 0);
+    const auto rgba = nlohmann::json::parse(pick.out)["rgba"];
+    // The pixel centre sits a fraction of a pixel off the sphere's pole: n·l moves by ~1e-3 there.
+    CHECK(rgba[0].get<double>() == doctest::Approx(0.8 / std::numbers::pi * 3.0 / std::sqrt(3.0)).epsilon(3e-3));
+    CHECK(rgba[2].get<double>() == doctest::Approx(0.3 / std::numbers::pi * 3.0 / std::sqrt(3.0)).epsilon(3e-3));
+    // No CPU reference for an arbitrary file: compare says so and fails rather than passing silently.
+    const Result compare = run("compare " + dir + "lambert.brdf --size 16x16 --json --heatmap " + temp_path("brdf-heat.png"));
+    CHECK(compare.exit_code == 1);
+    CHECK(compare.out.find("\"reference\":false") != std::string::npos);
+}
+
+TEST_CASE("malformed .brdf files exit 1 naming the .brdf's file and line") {
+    const std::map<std::string, std::string> expected = {
+        {"bad_parameter.brdf", "bad_parameter.brdf:3: maximum"},
+        {"broken_shader.brdf", "broken_shader.brdf:10: error"},
+        {"no_brdf_function.brdf", "no_brdf_function.brdf:2: the shader block does not define"},
+        {"no_shader.brdf", "no_shader.brdf:4: no '::begin shader'"},
+        {"not_analytic.brdf", "not_analytic.brdf:1: a .brdf file fxview can render starts with 'analytic'"},
+        {"unknown_type.brdf", "unknown_type.brdf:3: unknown parameter type 'vec2'"},
+        {"unterminated_shader.brdf", "unterminated_shader.brdf:5: '::begin shader' without '::end shader'"}};
+    for (const auto& [file, message] : expected) {
+        const std::string path = std::string(FXVIEW_TEST_EFFECTS) + "/brdf/malformed/" + file;
+        CAPTURE(path);
+        const Result r = run("check " + path);
+        CHECK(r.exit_code == 1);
+        CHECK((r.out + r.err).find(message) != std::string::npos);
     }
 }

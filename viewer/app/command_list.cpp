@@ -79,8 +79,16 @@ CommandRunner add_list_command(CLI::App& app) {
                       << (technique.passes.size() == 1 ? "" : "es") << ")\n";
         }
         std::cout << "parameters:\n";
-        for (const auto& p : effect.parameters)
-            std::cout << "  " << p.type << " " << p.name << (p.semantic.empty() ? "" : " : " + p.semantic) << "\n";
+        // Range and default where the effect gives them, as the UI shows them.
+        for (size_t i = 0; i < effect.parameters.size(); ++i) {
+            const effect::Parameter& p = effect.parameters[i];
+            std::cout << "  " << p.type << " " << p.name << (p.semantic.empty() ? "" : " : " + p.semantic);
+            if (p.ui.min || p.ui.max)
+                std::cout << "  range " << (p.ui.min ? parameters[i]["min"].dump() : "-") << ".." << (p.ui.max ? parameters[i]["max"].dump() : "-");
+            if (p.default_value)
+                std::cout << "  default " << (p.type == "bool" ? (parameters[i]["default"] == 0.0 ? "false" : "true") : parameters[i]["default"].dump());
+            std::cout << "\n";
+        }
         return 0;
     };
 }

@@ -1,4 +1,5 @@
 #include "effect/source_map.hpp"
+#include "effect/brdf_file.hpp"
 
 #include <cctype>
 
@@ -119,6 +120,15 @@ void SourceMap::append_file(const std::string& path, const LoadContext& context,
             if (!once_.insert(canonical).second) return;
             line.clear();
         }
+    // A BRDF Explorer file becomes effect text first, each line keeping its line in the .brdf.
+    std::vector<int> origins;
+    if (!included_from && is_brdf_file(path)) {
+        TranslatedLines translated = translate_brdf_file(path, lines);
+        lines = std::move(translated.lines);
+        origins = std::move(translated.origins);
+    } else {
+        for (size_t i = 0; i < lines.size(); ++i) origins.push_back(static_cast<int>(i + 1));
+    }
     int index = file_index(path);
     if (index < 0) {
         index = static_cast<int>(files_.size());
@@ -126,9 +136,9 @@ void SourceMap::append_file(const std::string& path, const LoadContext& context,
     }
     stack.push_back(canonical);
 
-    int number = 0;
-    for (std::string& line : lines) {
-        ++number;
+    for (size_t i = 0; i < lines.size(); ++i) {
+        std::string& line = lines[i];
+        const int number = origins[i];
         const auto [word, after] = directive(line);
         if (word == "include") {
             const SourceLocation here{path, number};

@@ -17,7 +17,7 @@ FolderListing list_folder(const std::filesystem::path& folder, const std::vector
 
 class FileBrowser {
 public:
-    explicit FileBrowser(std::filesystem::path start, std::vector<std::string> extensions = {".fx"})
+    explicit FileBrowser(std::filesystem::path start, std::vector<std::string> extensions = {".fx", ".brdf"})
         : folder_(std::move(start)), extensions_(std::move(extensions)) {}
 
     // Draws the browser inside the current popup; returns the file chosen this frame.

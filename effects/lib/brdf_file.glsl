@@ -1,0 +1,51 @@
+// The techniques of a BRDF Explorer file (`.brdf`, viewer/effect/brdf_file.hpp): included after the
+// file's shader block, which defines vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) with unit
+// vectors to the light and the eye, the normal, the tangent and the bitangent (X × Y = N).
+// Names here start with fx/Fx so that they do not collide with the file's own helpers.
+
+uniform float LightIrradiance < string UIName = "Light irradiance E"; float UIMin = 0; float UIMax = 20; float UIStep = 0.1; string UIGroup = "Light";
+                                string UIHelp = "Irradiance the point light delivers at normal incidence (no distance fall-off)"; > = 3.0;
+
+// BRDF() at a surface point, and n·l; 0 where the light or the eye is below the surface.
+vec3 fx_brdf_at(vec3 position, vec3 normal, vec3 tangent, out float nl) {
+    vec3 n = normalize(normal);
+    vec3 l = normalize(LightPosition - position);
+    vec3 v = normalize(CameraPosition - position);
+    // The mesh's tangent made orthogonal to n (any perpendicular where it is parallel to n).
+    vec3 x = tangent - n * dot(n, tangent);
+    if (dot(x, x) < 1e-12) x = cross(n, abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0));
+    x = normalize(x);
+    vec3 y = cross(n, x);
+    nl = dot(n, l);
+    return nl > 0.0 && dot(n, v) > 0.0 ? vec3(BRDF(l, v, n, x, y)) : vec3(0.0);
+}
+
+GLSLShader FxBrdfLitFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        float nl;
+        vec3 f = fx_brdf_at(fs_in.world_position, fs_in.normal, fs_in.tangent, nl);
+        color = vec4(f * LightIrradiance * max(nl, 0.0), 1.0);
+        fx_capture();
+    }
+}
+
+GLSLShader FxBrdfValueFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        float nl;
+        color = vec4(fx_brdf_at(fs_in.world_position, fs_in.normal, fs_in.tangent, nl), 1.0);
+        fx_capture();
+    }
+}
+
+technique Lit < bool Default = true; string UIName = "Lit by the point light";
+                string UIHelp = "Outgoing radiance f(l, v) E (n.l) under the scene's point light, linear RGB"; >
+    { pass p0 { VertexShader = StandardVS; FragmentShader = FxBrdfLitFS; } }
+technique BrdfValue < string UIName = "BRDF value f(l, v)";
+                      string UIHelp = "The BRDF itself at each fragment, without the light's irradiance or n.l"; >
+    { pass p0 { VertexShader = StandardVS; FragmentShader = FxBrdfValueFS; } }

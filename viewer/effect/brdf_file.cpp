@@ -1,0 +1,165 @@
+#include "effect/brdf_file.hpp"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <regex>
+#include <sstream>
+
+#include "core/text.hpp"
+#include "effect/source_map.hpp"
+
+namespace fxview::effect {
+namespace {
+
+std::string trim(const std::string& text) {
+    size_t begin = 0, end = text.size();
+    while (begin < end && std::isspace(static_cast<unsigned char>(text[begin]))) ++begin;
+    while (end > begin && std::isspace(static_cast<unsigned char>(text[end - 1]))) --end;
+    return text.substr(begin, end - begin);
+}
+
+std::vector<std::string> words(const std::string& text) {
+    std::istringstream stream(text);
+    std::vector<std::string> out;
+    for (std::string word; stream >> word;) out.push_back(word);
+    return out;
+}
+
+bool is_identifier(const std::string& name) {
+    if (name.empty() || name.size() > 64 || std::isdigit(static_cast<unsigned char>(name[0]))) return false;
+    for (const char c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+    return name.rfind("gl_", 0) != 0;
+}
+
+// A number as GLSL float text; throws at `where` if `word` is not one.
+std::string number(const std::string& word, const SourceLocation& where, const std::string& what) {
+    double value = 0;
+    const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+    if (error != std::errc() || end != word.data() + word.size() || !std::isfinite(value))
+        throw EffectError(where, what + ": '" + excerpt(word) + "' is not a number");
+    std::ostringstream text;
+    text.precision(9);
+    text << value;
+    std::string out = text.str();
+    if (out.find_first_of(".e") == std::string::npos) out += ".0";
+    return out;
+}
+
+std::string parameter_line(const std::vector<std::string>& w, const SourceLocation& where) {
+    const std::string& type = w[0];
+    const auto expect = [&](size_t count, const char* form) {
+        if (w.size() != count) {
+            std::string got;
+            for (const auto& word : w) got += (got.empty() ? "" : " ") + word;
+            throw EffectError(where, "expected '" + std::string(form) + "', got '" + excerpt(got) + "'");
+        }
+        if (!is_identifier(w[1])) throw EffectError(where, "'" + excerpt(w[1]) + "' is not a usable parameter name");
+    };
+    if (type == "float") {
+        expect(5, "float NAME MIN MAX DEFAULT");
+        const std::string low = number(w[2], where, "minimum"), high = number(w[3], where, "maximum"), value = number(w[4], where, "default");
+        if (std::stod(low) > std::stod(high)) throw EffectError(where, "the minimum " + low + " lies above the maximum " + high);
+        return "uniform float " + w[1] + " < string UIName = \"" + w[1] + "\"; float UIMin = " + low + "; float UIMax = " + high +
+               "; string UIGroup = \"BRDF\"; > = " + value + ";";
+    }
+    if (type == "color") {
+        expect(5, "color NAME R G B");
+        return "uniform vec3 " + w[1] + " < string UIName = \"" + w[1] + "\"; string UIWidget = \"color\"; string UIGroup = \"BRDF\"; > = {" +
+               number(w[2], where, "red") + ", " + number(w[3], where, "green") + ", " + number(w[4], where, "blue") + "};";
+    }
+    if (type == "bool") {
+        expect(3, "bool NAME DEFAULT");
+        const std::string& value = w[2];
+        if (value != "0" && value != "1" && value != "true" && value != "false")
+            throw EffectError(where, "a bool's default is 0, 1, true or false, not '" + excerpt(value) + "'");
+        return "uniform bool " + w[1] + " < string UIName = \"" + w[1] + "\"; string UIGroup = \"BRDF\"; > = " +
+               (value == "1" || value == "true" ? "true" : "false") + ";";
+    }
+    throw EffectError(where, "unknown parameter type '" + excerpt(type) + "' (float, color or bool)");
+}
+
+}  // namespace
+
+bool is_brdf_file(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension == ".brdf";
+}
+
+TranslatedLines translate_brdf_file(const std::string& path, const std::vector<std::string>& lines) {
+    TranslatedLines out;
+    const auto emit = [&](std::string text, int origin) {
+        out.lines.push_back(std::move(text));
+        out.origins.push_back(origin);
+    };
+    enum class Block { None, Parameters, Shader };
+    Block block = Block::None;
+    int block_start = 0;
+    bool has_shader = false, seen_kind = false, defines_brdf = false;
+    int shader_start = 0;
+    for (size_t i = 0; i < lines.size(); ++i) {
+        const int number = static_cast<int>(i + 1);
+        const SourceLocation where{path, number};
+        const std::string line = trim(lines[i]);
+        if (block == Block::Shader) {
+            if (line == "::end shader") {
+                block = Block::None;
+                emit("", number);
+            } else {
+                // A definition (not only a call) of BRDF: the name followed by '(' after a type.
+                static const std::regex definition(R"((^|[^A-Za-z0-9_])vec3\s+BRDF\s*\()");
+                defines_brdf = defines_brdf || std::regex_search(lines[i], definition);
+                emit(lines[i], number);  // GLSL as written
+            }
+            continue;
+        }
+        if (line.empty() || line[0] == '#') {
+            emit("", number);
+            continue;
+        }
+        if (!seen_kind) {
+            seen_kind = true;
+            if (line != "analytic")
+                throw EffectError(where, "a .brdf file fxview can render starts with 'analytic' (measured and image BRDFs are not supported), got '" +
+                                             excerpt(line) + "'");
+            // The effect's own prelude: the shared vertex stage and its uniforms.
+            emit("#include \"standard.glsl\"", number);
+            continue;
+        }
+        if (line.rfind("::", 0) == 0) {
+            if (line == "::begin parameters" && block == Block::None) {
+                block = Block::Parameters;
+                block_start = number;
+            } else if (line == "::end parameters" && block == Block::Parameters) {
+                block = Block::None;
+            } else if (line == "::begin shader" && block == Block::None) {
+                if (has_shader) throw EffectError(where, "a second shader block");
+                block = Block::Shader;
+                block_start = shader_start = number;
+                has_shader = true;
+            } else {
+                throw EffectError(where, "unexpected '" + excerpt(line) + "'" +
+                                             (block == Block::Parameters ? " inside the parameters block (it ends with '::end parameters')" : ""));
+            }
+            emit("", number);
+            continue;
+        }
+        if (block != Block::Parameters) throw EffectError(where, "text outside a '::begin parameters' or '::begin shader' block: '" + excerpt(line) + "'");
+        emit(parameter_line(words(trim(line.substr(0, line.find('#')))), where), number);  // a trailing # comment is allowed
+    }
+    const int last = static_cast<int>(lines.size());
+    if (!seen_kind) throw EffectError({path, 1}, "an empty .brdf file (it starts with 'analytic')");
+    if (block == Block::Parameters) throw EffectError({path, block_start}, "'::begin parameters' without '::end parameters'");
+    if (block == Block::Shader) throw EffectError({path, block_start}, "'::begin shader' without '::end shader'");
+    if (!has_shader) throw EffectError({path, last}, "no '::begin shader' block defining vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)");
+    if (!defines_brdf)
+        throw EffectError({path, shader_start}, "the shader block does not define vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)");
+    // The techniques that render BRDF() (effects/lib/brdf_file.glsl), after it is defined.
+    emit("#include \"brdf_file.glsl\"", last);
+    return out;
+}
+
+}  // namespace fxview::effect
