@@ -49,3 +49,37 @@ technique Lit < bool Default = true; string UIName = "Lit by the point light";
 technique BrdfValue < string UIName = "BRDF value f(l, v)";
                       string UIHelp = "The BRDF itself at each fragment, without the light's irradiance or n.l"; >
     { pass p0 { VertexShader = StandardVS; FragmentShader = FxBrdfValueFS; } }
+
+// ---- The direction grid of `fxview brdf-check` (viewer/app/brdf_check.hpp) ----
+// Tile t (row-major, kFxGridTilesX tiles a row) holds incidence θi = 1° + 2° t in the plane of the
+// tangent (φi = 0); within it, pixel (a, b) is the outgoing direction with cos θo = (b + ½) / kFxGridTile
+// and φo = 2π (a + ½) / kFxGridTile: equal solid angle per pixel, so the albedo is a plain sum.
+// FxSwapArguments evaluates f(V, L) instead, for the reciprocity check.
+#include "fullscreen.glsl"
+const int kFxGridTile = 256, kFxGridTilesX = 9, kFxGridIncidences = 45;
+uniform bool FxSwapArguments < string UIName = "Swap L and V"; string UIGroup = "BRDF grid";
+                               string UIHelp = "Evaluate f(V, L) instead of f(L, V) (reciprocity check)"; > = false;
+
+GLSLShader FxBrdfGridFS {
+    layout(location = 0) out vec4 color;
+    void main() {
+        ivec2 p = ivec2(gl_FragCoord.xy);
+        int tile = (p.y / kFxGridTile) * kFxGridTilesX + p.x / kFxGridTile;
+        if (tile >= kFxGridIncidences) {
+            color = vec4(0.0);
+            return;
+        }
+        ivec2 q = p % kFxGridTile;
+        float theta_i = radians(1.0 + 2.0 * float(tile));
+        float mu = (float(q.y) + 0.5) / float(kFxGridTile);
+        float phi = 6.28318530718 * (float(q.x) + 0.5) / float(kFxGridTile);
+        float s = sqrt(max(1.0 - mu * mu, 0.0));
+        vec3 l = vec3(sin(theta_i), 0.0, cos(theta_i)), v = vec3(s * cos(phi), s * sin(phi), mu);
+        vec3 n = vec3(0.0, 0.0, 1.0), x = vec3(1.0, 0.0, 0.0), y = vec3(0.0, 1.0, 0.0);
+        color = vec4(FxSwapArguments ? vec3(BRDF(v, l, n, x, y)) : vec3(BRDF(l, v, n, x, y)), 1.0);
+    }
+}
+
+technique BrdfGrid < string UIName = "BRDF over a direction grid (brdf-check)";
+                     string UIHelp = "f(l, v) for 45 incidence angles, each tile all outgoing directions: what brdf-check sums"; >
+    { pass p0 { Draw = Buffer; VertexShader = FullscreenVS; FragmentShader = FxBrdfGridFS; } }
