@@ -666,3 +666,36 @@ TEST_CASE("brdf-check: albedo, reciprocity and energy against known answers") {
     // An effect without the grid technique is refused with a usage error.
     CHECK(run("brdf-check " + std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/debug.fx").exit_code == 2);
 }
+
+TEST_CASE("brdf-plot writes every view at the asked size, and its CSV holds the GPU's values") {
+    const std::string dir = std::string(FXVIEW_TEST_EFFECTS) + "/brdf/";
+    for (const char* view : {"polar", "albedo", "sphere"}) {
+        CAPTURE(view);
+        const std::string out = temp_path(std::string("plot-") + view + ".png");
+        const std::string files = std::string(view) == "sphere" ? dir + "lambert.brdf" : dir + "lambert.brdf " + dir + "phong_old_dialect.brdf";
+        const Result r = run("brdf-plot " + files + " --view " + view + " --size 320x200 --out " + out + (std::string(view) == "polar" ? " --log" : ""));
+        REQUIRE(r.exit_code == 0);
+        // PNG: width and height are the big-endian words at bytes 16 and 20 (the IHDR chunk).
+        std::ifstream png(out, std::ios::binary);
+        unsigned char header[24] = {};
+        png.read(reinterpret_cast<char*>(header), sizeof header);
+        const auto word = [&](int at) { return (header[at] << 24) | (header[at + 1] << 16) | (header[at + 2] << 8) | header[at + 3]; };
+        CHECK(word(16) == 320);
+        CHECK(word(20) == 200);
+    }
+    // Lambert in the plane of incidence: reflectance / π at every sample (float rounding only).
+    const std::string csv_path = temp_path("polar.csv");
+    REQUIRE(run("brdf-plot " + dir + "lambert.brdf --out " + temp_path("polar.png") + " --csv " + csv_path).exit_code == 0);
+    std::ifstream csv(csv_path);
+    std::string line;
+    std::getline(csv, line);
+    CHECK(line == "theta_o_deg,file,r,g,b");
+    int rows = 0;
+    while (std::getline(csv, line)) {
+        ++rows;
+        const double red = std::stod(line.substr(line.find("lambert,") + 8));
+        CHECK(red == doctest::Approx(0.8 / std::numbers::pi).epsilon(1e-6));
+    }
+    CHECK(rows == 721);
+    CHECK(run("brdf-plot " + dir + "lambert.brdf " + dir + "lambert.brdf --view sphere --out " + temp_path("two.png")).exit_code == 2);
+}

@@ -57,13 +57,27 @@ technique BrdfValue < string UIName = "BRDF value f(l, v)";
 // FxSwapArguments evaluates f(V, L) instead, for the reciprocity check.
 #include "fullscreen.glsl"
 const int kFxGridTile = 256, kFxGridTilesX = 9, kFxGridIncidences = 45;
+uniform vec4 FxViewportSize : VIEWPORTPIXELSIZE;
 uniform bool FxSwapArguments < string UIName = "Swap L and V"; string UIGroup = "BRDF grid";
                                string UIHelp = "Evaluate f(V, L) instead of f(L, V) (reciprocity check)"; > = false;
+// Mode 1 (`fxview brdf-plot --view polar`): one row across the plane of incidence instead, θo from
+// -90° (mirror side) to 90° (the light's side) over the target's width, for θi = FxIncidence.
+uniform int FxGridMode < string UIName = "Grid layout"; string UIWidget = "combo"; string UIItems = "incidence tiles|plane of incidence";
+                         string UIGroup = "BRDF grid"; > = 0;
+uniform float FxIncidence < string UIName = "Incidence (plane)"; float UIMin = 0; float UIMax = 89; string UIUnits = "deg";
+                            string UIGroup = "BRDF grid"; > = 30.0;
 
 GLSLShader FxBrdfGridFS {
     layout(location = 0) out vec4 color;
     void main() {
         ivec2 p = ivec2(gl_FragCoord.xy);
+        vec3 n = vec3(0.0, 0.0, 1.0), x = vec3(1.0, 0.0, 0.0), y = vec3(0.0, 1.0, 0.0);
+        if (FxGridMode == 1) {
+            float theta_o = radians(-90.0 + 180.0 * gl_FragCoord.x / FxViewportSize.x), theta_i = radians(FxIncidence);
+            vec3 l = vec3(sin(theta_i), 0.0, cos(theta_i)), v = vec3(sin(theta_o), 0.0, cos(theta_o));
+            color = vec4(FxSwapArguments ? vec3(BRDF(v, l, n, x, y)) : vec3(BRDF(l, v, n, x, y)), 1.0);
+            return;
+        }
         int tile = (p.y / kFxGridTile) * kFxGridTilesX + p.x / kFxGridTile;
         if (tile >= kFxGridIncidences) {
             color = vec4(0.0);
@@ -75,7 +89,6 @@ GLSLShader FxBrdfGridFS {
         float phi = 6.28318530718 * (float(q.x) + 0.5) / float(kFxGridTile);
         float s = sqrt(max(1.0 - mu * mu, 0.0));
         vec3 l = vec3(sin(theta_i), 0.0, cos(theta_i)), v = vec3(s * cos(phi), s * sin(phi), mu);
-        vec3 n = vec3(0.0, 0.0, 1.0), x = vec3(1.0, 0.0, 0.0), y = vec3(0.0, 1.0, 0.0);
         color = vec4(FxSwapArguments ? vec3(BRDF(v, l, n, x, y)) : vec3(BRDF(l, v, n, x, y)), 1.0);
     }
 }

@@ -1,19 +1,13 @@
-// `fxview brdf-check FILE`: renders the effect's BrdfGrid technique twice (f(L, V), then f(V, L)) into
-// float targets and prints what app/brdf_check.hpp measures.
+// `fxview brdf-check FILE`: evaluates the BRDF over the grid twice (f(L, V), then f(V, L)) and prints
+// what app/brdf_check.hpp measures.
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <iostream>
 
 #include "app/brdf_check.hpp"
+#include "app/brdf_evaluation.hpp"
 #include "app/commands.hpp"
-#include "app/effect_options.hpp"
-#include "context/context.hpp"
-#include "core/error.hpp"
-#include "effect/parameter_values.hpp"
-#include "gl/render_target.hpp"
-#include "render/effect_session.hpp"
-#include "scene/scene.hpp"
 
 namespace fxview::app {
 
@@ -30,28 +24,8 @@ CommandRunner add_brdf_check_command(CLI::App& app) {
     command->add_option("--backend", o->backend, "egl (default), egl-device or osmesa");
     command->add_flag("--json", o->json, "Print one JSON object");
     return [o] {
-        context::ContextOptions context_options;
-        context_options.backend = context::parse_backend(o->backend);
-        context_options.window_width = kGridWidth;
-        context_options.window_height = kGridHeight;
-        context_options.window_visible = false;
-        const auto context = context::create_context(context_options);
-        EffectOptions effect_options = o->effect;
-        effect_options.technique.clear();
-        const auto session = open_effect_session(effect_options);
-        try {
-            session->select_technique("BrdfGrid");
-        } catch (const UsageError&) {
-            throw UsageError(o->effect.path + " has no BrdfGrid technique: brdf-check works on .brdf files");
-        }
-        gl::RenderTarget target({kGridWidth, kGridHeight, 1, 0});
-        const scene::Scene scene;
-        const auto render = [&](const char* swap) {
-            effect::set_value_from_text(session->effect(), session->values(), std::string("FxSwapArguments=") + swap);
-            session->render(scene, target);
-            return target.read_color(0);
-        };
-        const image::FloatImage forward = render("false"), swapped = render("true");
+        BrdfEvaluation evaluation(o->effect, o->backend);
+        const image::FloatImage forward = evaluation.grid(false), swapped = evaluation.grid(true);
         const BrdfCheck c = analyse_brdf_grid(forward, swapped);
         if (o->json) {
             nlohmann::json albedo = nlohmann::json::array();

@@ -22,5 +22,6 @@ CommandRunner add_fit_command(CLI::App& app);
 CommandRunner add_brdf_grid_command(CLI::App& app);
 CommandRunner add_plugin_command(CLI::App& app);
 CommandRunner add_brdf_check_command(CLI::App& app);
+CommandRunner add_brdf_plot_command(CLI::App& app);
 
 }  // namespace fxview::app

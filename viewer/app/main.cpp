@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
         {"brdf-grid", app::add_brdf_grid_command(app)},
         {"plugin", app::add_plugin_command(app)},
         {"brdf-check", app::add_brdf_check_command(app)},
+        {"brdf-plot", app::add_brdf_plot_command(app)},
     };
     if (argc > 1 && argv[1][0] != '-' && !runners.contains(argv[1])) {
         std::cerr << "fxview: unknown command '" << clipped_message(argv[1]).substr(0, 80) << "' (expected view, render, pick, info, list, check, spectra, compare or bench)\n";

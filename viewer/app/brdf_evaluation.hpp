@@ -1,0 +1,33 @@
+// A BRDF evaluated on the GPU over directions, through the BrdfGrid technique that every .brdf file
+// gets (effects/lib/brdf_file.glsl): the grid that brdf-check sums, or one row across the plane of
+// incidence for brdf-plot. Owns a headless GL context and the effect's session.
+#pragma once
+#include <memory>
+#include <string>
+
+#include "app/effect_options.hpp"
+#include "context/context.hpp"
+#include "image/image.hpp"
+#include "render/effect_session.hpp"
+
+namespace fxview::app {
+
+class BrdfEvaluation {
+public:
+    // Throws UsageError when the effect has no BrdfGrid technique.
+    BrdfEvaluation(const EffectOptions& effect, const std::string& backend);
+    ~BrdfEvaluation();
+    // f(L, V) (or f(V, L)) over the tiles of app/brdf_check.hpp, rows from the top.
+    image::FloatImage grid(bool swapped);
+    // f(L, V) at `samples` outgoing directions across the plane of incidence, θo from -90° (mirror
+    // side) to 90°, sample k at θo = -90 + 180 (k + ½) / samples, for incidence θi in degrees.
+    image::FloatImage plane(double incidence_degrees, int samples, bool swapped = false);
+
+private:
+    image::FloatImage render(int width, int height, const std::string& mode, bool swapped, double incidence);
+    std::unique_ptr<context::Context> context_;
+    std::unique_ptr<render::EffectSession> session_;
+    std::string path_;
+};
+
+}  // namespace fxview::app

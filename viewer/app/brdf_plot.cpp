@@ -1,0 +1,127 @@
+#include "app/brdf_plot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "image/canvas.hpp"
+
+namespace fxview::app {
+namespace {
+
+using image::Canvas;
+using image::Rgb;
+
+const Rgb kGrid{0.86f, 0.86f, 0.86f}, kInk{0.1f, 0.1f, 0.1f}, kMuted{0.55f, 0.55f, 0.55f};
+
+void legend(Canvas& canvas, const std::vector<BrdfSeries>& series, int x, int y) {
+    for (size_t i = 0; i < series.size(); ++i) {
+        const int row = y + static_cast<int>(i) * 24;
+        canvas.line(static_cast<float>(x), static_cast<float>(row + 6), static_cast<float>(x + 30), static_cast<float>(row + 6), image::palette(i), 3.0f);
+        canvas.text(x + 38, row, series[i].name.substr(0, 28), kInk);
+    }
+}
+
+double largest(const std::vector<BrdfSeries>& series) {
+    double peak = 0;
+    for (const auto& s : series)
+        for (const double v : s.values)
+            if (std::isfinite(v)) peak = std::max(peak, v);
+    return peak;
+}
+
+}  // namespace
+
+image::FloatImage polar_chart(const std::vector<BrdfSeries>& series, double incidence_degrees, bool logarithmic, ChartSize size) {
+    Canvas canvas(size.width, size.height);
+    const float cx = size.width * 0.5f, cy = static_cast<float>(size.height - 50);
+    const float radius = std::max(10.0f, std::min(cx - 30.0f, cy - 70.0f));
+    const double peak = largest(series);
+    // Linear: radius ∝ f up to a nice maximum. Logarithmic: four decades below the peak's decade.
+    const auto axis = image::nice_axis(peak * 1.02);
+    const double top = logarithmic ? std::ceil(std::log10(std::max(peak, 1e-30))) : axis.first;
+    const double bottom = logarithmic ? top - 4.0 : 0.0;
+    const auto to_radius = [&](double f) {
+        const double t = logarithmic ? (f > 0 ? (std::log10(f) - bottom) / (top - bottom) : 0.0) : f / axis.first;
+        return static_cast<float>(std::clamp(t, 0.0, 1.0) * radius);
+    };
+    const auto point = [&](double degrees, float r) {
+        const double a = degrees * std::numbers::pi / 180.0;
+        return std::pair{cx + r * static_cast<float>(std::sin(a)), cy - r * static_cast<float>(std::cos(a))};
+    };
+    // Rings at the ticks, spokes every 30°.
+    std::vector<double> ticks;
+    if (logarithmic)
+        for (double d = bottom + 1; d <= top + 1e-9; d += 1) ticks.push_back(std::pow(10.0, d));
+    else
+        for (double v = axis.second; v <= axis.first + 1e-12; v += axis.second) ticks.push_back(v);
+    for (const double tick : ticks) {
+        const float r = to_radius(tick);
+        for (int k = 0; k < 90; ++k) {
+            const auto [ax, ay] = point(-90.0 + 2.0 * k, r);
+            const auto [bx, by] = point(-88.0 + 2.0 * k, r);
+            canvas.line(ax, ay, bx, by, kGrid, 1.0f);
+        }
+        canvas.text(static_cast<int>(cx + r) - Canvas::text_width(image::chart_number(tick)) / 2, static_cast<int>(cy) + 8,
+                    image::chart_number(tick), kMuted);
+    }
+    for (int degrees = -90; degrees <= 90; degrees += 30) {
+        const auto [x, y] = point(degrees, radius);
+        canvas.line(cx, cy, x, y, kGrid, 1.0f);
+        const auto [lx, ly] = point(degrees, radius + 18);
+        const std::string label = std::to_string(degrees);
+        canvas.text(static_cast<int>(lx) - Canvas::text_width(label) / 2, static_cast<int>(ly) - 6, label, kMuted);
+    }
+    canvas.line(cx - radius, cy, cx + radius, cy, kInk, 1.5f);
+    // The light's direction on the right.
+    const auto [light_x, light_y] = point(incidence_degrees, radius);
+    canvas.line(cx, cy, light_x, light_y, Rgb{0.95f, 0.7f, 0.1f}, 2.5f);
+    for (size_t i = 0; i < series.size(); ++i) {
+        const auto& values = series[i].values;
+        const size_t n = values.size();
+        for (size_t k = 0; k + 1 < n; ++k) {
+            const double d0 = -90.0 + 180.0 * (k + 0.5) / n, d1 = -90.0 + 180.0 * (k + 1.5) / n;
+            if (!std::isfinite(values[k]) || !std::isfinite(values[k + 1])) continue;
+            const auto [ax, ay] = point(d0, to_radius(values[k]));
+            const auto [bx, by] = point(d1, to_radius(values[k + 1]));
+            canvas.line(ax, ay, bx, by, image::palette(i), 2.0f);
+        }
+    }
+    canvas.text(12, 10, "f(l, v) in the plane of incidence, theta_i = " + image::chart_number(incidence_degrees) + " deg" +
+                            (logarithmic ? " (log scale)" : ""), kInk);
+    legend(canvas, series, 12, 36);
+    return canvas.take();
+}
+
+image::FloatImage albedo_chart(const std::vector<BrdfSeries>& series, const std::vector<double>& incidence_degrees, ChartSize size) {
+    Canvas canvas(size.width, size.height);
+    const int left = 80, right = size.width - 30, top = 70, bottom = size.height - 60;
+    const auto axis = image::nice_axis(std::max(1.1, largest(series) * 1.05));
+    const auto px = [&](double degrees) { return static_cast<float>(left + degrees / 90.0 * (right - left)); };
+    const auto py = [&](double v) { return static_cast<float>(bottom - v / axis.first * (bottom - top)); };
+    for (double v = 0; v <= axis.first + 1e-9; v += axis.second) {
+        canvas.line(static_cast<float>(left), py(v), static_cast<float>(right), py(v), kGrid, 1.0f);
+        const std::string label = image::chart_number(v);
+        canvas.text(left - 10 - Canvas::text_width(label), static_cast<int>(py(v)) - 6, label, kInk);
+    }
+    for (int d = 0; d <= 90; d += 15) {
+        canvas.line(px(d), static_cast<float>(top), px(d), static_cast<float>(bottom), kGrid, 1.0f);
+        const std::string label = std::to_string(d);
+        canvas.text(static_cast<int>(px(d)) - Canvas::text_width(label) / 2, bottom + 10, label, kInk);
+    }
+    // Energy conservation: no albedo above 1.
+    for (int k = 0; k < 45; k += 2) canvas.line(px(2.0 * k), py(1.0), px(2.0 * k + 2), py(1.0), Rgb{0.84f, 0.15f, 0.16f}, 1.5f);
+    canvas.line(static_cast<float>(left), static_cast<float>(bottom), static_cast<float>(right), static_cast<float>(bottom), kInk, 1.5f);
+    canvas.line(static_cast<float>(left), static_cast<float>(top), static_cast<float>(left), static_cast<float>(bottom), kInk, 1.5f);
+    for (size_t i = 0; i < series.size(); ++i)
+        for (size_t k = 0; k + 1 < series[i].values.size() && k + 1 < incidence_degrees.size(); ++k)
+            canvas.line(px(incidence_degrees[k]), py(series[i].values[k]), px(incidence_degrees[k + 1]), py(series[i].values[k + 1]),
+                        image::palette(i), 2.0f);
+    const std::string x_label = "angle of incidence / deg";
+    canvas.text((left + right - Canvas::text_width(x_label)) / 2, size.height - 28, x_label, kInk);
+    canvas.text(12, 10, "directional albedo (mean of R, G, B); red: 1, what the light brings", kInk);
+    legend(canvas, series, left + 20, 36);
+    return canvas.take();
+}
+
+}  // namespace fxview::app

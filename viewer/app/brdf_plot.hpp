@@ -1,0 +1,26 @@
+// BRDF charts as images (`fxview brdf-plot`), in the manner of BRDF Explorer: the polar plot of the
+// plane of incidence, several BRDFs overlaid, linear or logarithmic; and directional albedo
+// against the angle of incidence with the line of energy conservation.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "image/image.hpp"
+
+namespace fxview::app {
+
+struct BrdfSeries {
+    std::string name;
+    std::vector<double> values;  // one per sample: polar, θo from -90° to 90°; albedo, per incidence
+};
+
+struct ChartSize {
+    int width = 800, height = 600;
+};
+
+// `series` values at θo = -90 + 180 (k + ½) / n degrees (the mirror side left), incidence drawn on the right.
+image::FloatImage polar_chart(const std::vector<BrdfSeries>& series, double incidence_degrees, bool logarithmic, ChartSize size);
+// `series` values at `incidence_degrees`.
+image::FloatImage albedo_chart(const std::vector<BrdfSeries>& series, const std::vector<double>& incidence_degrees, ChartSize size);
+
+}  // namespace fxview::app

@@ -1,0 +1,107 @@
+// `fxview brdf-plot FILE... --view polar|albedo|sphere --out P.png [--csv F.csv]`: BRDF Explorer's
+// views, headless. Values come from the GPU (app/brdf_evaluation.hpp), so any .brdf file works.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "app/brdf_check.hpp"
+#include "app/brdf_evaluation.hpp"
+#include "app/brdf_plot.hpp"
+#include "app/commands.hpp"
+#include "app/offscreen_render.hpp"
+#include "app/scene_options.hpp"
+#include "app/value_parsing.hpp"
+#include "core/error.hpp"
+#include "image/image_file.hpp"
+
+namespace fxview::app {
+namespace {
+
+constexpr int kPlaneSamples = 721;  // every quarter degree across the plane of incidence
+
+double mean_rgb(const float* p) { return (static_cast<double>(p[0]) + p[1] + p[2]) / 3.0; }
+
+}  // namespace
+
+CommandRunner add_brdf_plot_command(CLI::App& app) {
+    struct Options {
+        std::vector<std::string> files;
+        std::vector<std::string> sets;
+        std::string view = "polar", out, csv, size = "800x600", backend = "egl";
+        double incidence = 30;
+        bool logarithmic = false;
+    };
+    auto o = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand("brdf-plot", "Plot BRDFs (.brdf files): polar plot of the plane of incidence, albedo, lit sphere");
+    command->add_option("files", o->files, "One or more .brdf files (overlaid in the polar and albedo views)")->required();
+    command->add_option("--view", o->view, "polar (default), albedo or sphere")->check(CLI::IsMember({"polar", "albedo", "sphere"}));
+    command->add_option("--out", o->out, "PNG (or EXR/PFM for the sphere) to write")->required();
+    command->add_option("--csv", o->csv, "Also write the plotted values as CSV");
+    command->add_option("--incidence", o->incidence, "Angle of incidence for the polar view, degrees")->check(CLI::Range(0.0, 89.0));
+    command->add_flag("--log", o->logarithmic, "Logarithmic radius in the polar view (four decades)");
+    command->add_option("--size", o->size, "Image size WxH");
+    command->add_option("--set", o->sets, "NAME=VALUE for every file's parameters (repeatable)");
+    command->add_option("--backend", o->backend, "egl (default), egl-device or osmesa");
+    return [o] {
+        const glm::ivec2 size = parse_size("--size", o->size);
+        if (o->view == "sphere") {
+            if (o->files.size() != 1) throw UsageError("brdf-plot --view sphere draws one file");
+            SceneOptions scene;
+            scene.size = o->size;
+            scene.backend = o->backend;
+            scene.effect.path = o->files[0];
+            scene.effect.technique = "Lit";
+            scene.effect.sets = o->sets;
+            image::write_image(o->out, render_offscreen(to_render_request(scene)));
+            std::printf("wrote %s (%dx%d)\n", o->out.c_str(), size.x, size.y);
+            return 0;
+        }
+        std::vector<BrdfSeries> series;
+        std::vector<std::vector<std::array<double, 3>>> rgb;  // per file, per sample, for the CSV
+        std::vector<double> incidences;
+        for (const auto& file : o->files) {
+            EffectOptions effect;
+            effect.path = file;
+            effect.sets = o->sets;
+            BrdfEvaluation evaluation(effect, o->backend);
+            BrdfSeries s{std::filesystem::path(file).stem().string(), {}};
+            std::vector<std::array<double, 3>> values;
+            if (o->view == "polar") {
+                const image::FloatImage plane = evaluation.plane(o->incidence, kPlaneSamples);
+                for (int k = 0; k < kPlaneSamples; ++k) {
+                    const float* p = plane.pixel(k, 0);
+                    s.values.push_back(mean_rgb(p));
+                    values.push_back({p[0], p[1], p[2]});
+                }
+            } else {
+                const BrdfCheck check = analyse_brdf_grid(evaluation.grid(false), evaluation.grid(true));
+                incidences = check.incidence_degrees;
+                for (const auto& albedo : check.albedo) {
+                    s.values.push_back((albedo[0] + albedo[1] + albedo[2]) / 3.0);
+                    values.push_back(albedo);
+                }
+            }
+            series.push_back(std::move(s));
+            rgb.push_back(std::move(values));
+        }
+        const ChartSize chart{size.x, size.y};
+        image::write_image(o->out, o->view == "polar" ? polar_chart(series, o->incidence, o->logarithmic, chart)
+                                                      : albedo_chart(series, incidences, chart));
+        std::printf("wrote %s (%dx%d)\n", o->out.c_str(), size.x, size.y);
+        if (!o->csv.empty()) {
+            std::ofstream csv(o->csv);
+            if (!csv) throw Error("cannot write " + o->csv);
+            csv << (o->view == "polar" ? "theta_o_deg" : "theta_i_deg") << ",file,r,g,b\n";
+            for (size_t f = 0; f < series.size(); ++f)
+                for (size_t k = 0; k < rgb[f].size(); ++k) {
+                    const double angle = o->view == "polar" ? -90.0 + 180.0 * (k + 0.5) / kPlaneSamples : incidences[k];
+                    csv << angle << "," << series[f].name << "," << rgb[f][k][0] << "," << rgb[f][k][1] << "," << rgb[f][k][2] << "\n";
+                }
+            std::printf("wrote %s\n", o->csv.c_str());
+        }
+        return 0;
+    };
+}
+
+}  // namespace fxview::app
