@@ -308,3 +308,20 @@ TEST_CASE("an effect refused by the file-access policy opens once its folder is 
     std::ofstream(script) << "set Gain 0.5\ntechnique T\n";
     CHECK(run("view " + effect + " --allow-path " + outside + " --script " + script + " --frames 2").exit_code == 0);
 }
+
+TEST_CASE("the BRDF tab plots a .brdf file and its check runs by script; an effect without the grid is refused") {
+    const std::string lambert = std::string(FXVIEW_TEST_EFFECTS) + "/brdf/lambert.brdf", script = temp_path("brdf-tab.txt");
+    std::ofstream(script) << "tab BRDF\nframes 2\nbrdf-check\n";
+    const Result r = run("view " + lambert + " --render-size 32x32 --script " + script + " --frames 2");
+    CAPTURE(r.err);
+    REQUIRE(r.exit_code == 0);
+    const auto line = r.out.substr(r.out.find("{\"brdf_check\""));
+    const auto check = nlohmann::json::parse(line.substr(0, line.find('\n')))["brdf_check"];
+    // Lambert's albedo is its largest reflectance, 0.8 (as brdf-check on the command line).
+    CHECK(check["max_albedo"].get<double>() == doctest::Approx(0.8).epsilon(1e-4));
+    CHECK(check["conserves_energy"] == true);
+    std::ofstream(script) << "brdf-check\n";
+    const Result refused = run("view " + std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/debug.fx --render-size 32x32 --script " + script + " --frames 2");
+    CHECK(refused.exit_code != 0);
+    CHECK(refused.err.find("no BRDF grid") != std::string::npos);
+}

@@ -18,31 +18,57 @@ BrdfEvaluation::BrdfEvaluation(const EffectOptions& effect, const std::string& b
     EffectOptions without_technique = effect;
     without_technique.technique.clear();
     session_ = open_effect_session(without_technique);
-    try {
-        session_->select_technique("BrdfGrid");
-    } catch (const UsageError&) {
-        throw UsageError(effect.path + " has no BrdfGrid technique: BRDF checks and plots work on .brdf files");
-    }
+    if (!has_brdf_grid(*session_)) throw UsageError(effect.path + " has no BrdfGrid technique: BRDF checks and plots work on .brdf files");
 }
 
 BrdfEvaluation::~BrdfEvaluation() {
     session_.reset();  // GL objects go before their context
 }
 
-image::FloatImage BrdfEvaluation::render(int width, int height, const std::string& mode, bool swapped, double incidence) {
-    effect::ParameterValues& values = session_->values();
-    effect::set_value_from_text(session_->effect(), values, "FxGridMode=" + mode);
-    effect::set_value_from_text(session_->effect(), values, std::string("FxSwapArguments=") + (swapped ? "true" : "false"));
-    effect::set_value_from_text(session_->effect(), values, "FxIncidence=" + std::to_string(incidence));
+namespace {
+
+image::FloatImage render_grid(render::EffectSession& session, int width, int height, const std::string& mode, bool swapped, double incidence) {
+    const std::string technique = session.technique();
+    const effect::ParameterValues saved = session.values();
+    struct Restore {
+        render::EffectSession& session;
+        const std::string& technique;
+        const effect::ParameterValues& values;
+        ~Restore() {
+            session.values() = values;
+            session.select_technique(technique);
+        }
+    } restore{session, technique, saved};
+    session.select_technique("BrdfGrid");
+    effect::ParameterValues& values = session.values();
+    effect::set_value_from_text(session.effect(), values, "FxGridMode=" + mode);
+    effect::set_value_from_text(session.effect(), values, std::string("FxSwapArguments=") + (swapped ? "true" : "false"));
+    effect::set_value_from_text(session.effect(), values, "FxIncidence=" + std::to_string(incidence));
     gl::RenderTarget target({width, height, 1, 0});
-    session_->render(scene::Scene{}, target);
+    session.render(scene::Scene{}, target);
     return target.read_color(0);
 }
 
-image::FloatImage BrdfEvaluation::grid(bool swapped) { return render(kGridWidth, kGridHeight, "0", swapped, 0.0); }
+}  // namespace
+
+bool has_brdf_grid(const render::EffectSession& session) {
+    for (const auto& technique : session.effect().techniques)
+        if (technique.name == "BrdfGrid") return true;
+    return false;
+}
+
+image::FloatImage evaluate_brdf_grid(render::EffectSession& session, bool swapped) {
+    return render_grid(session, kGridWidth, kGridHeight, "0", swapped, 0.0);
+}
+
+image::FloatImage evaluate_brdf_plane(render::EffectSession& session, double incidence_degrees, int samples, bool swapped) {
+    return render_grid(session, samples, 1, "1", swapped, incidence_degrees);
+}
+
+image::FloatImage BrdfEvaluation::grid(bool swapped) { return evaluate_brdf_grid(*session_, swapped); }
 
 image::FloatImage BrdfEvaluation::plane(double incidence_degrees, int samples, bool swapped) {
-    return render(samples, 1, "1", swapped, incidence_degrees);
+    return evaluate_brdf_plane(*session_, incidence_degrees, samples, swapped);
 }
 
 }  // namespace fxview::app

@@ -12,6 +12,13 @@
 
 namespace fxview::app {
 
+// On an effect's session (the viewer's, or BrdfEvaluation's): whether it has the grid technique, and
+// the grid or the plane of incidence rendered with its current parameter values. The session's
+// technique and values are left as they were.
+bool has_brdf_grid(const render::EffectSession& session);
+image::FloatImage evaluate_brdf_grid(render::EffectSession& session, bool swapped);
+image::FloatImage evaluate_brdf_plane(render::EffectSession& session, double incidence_degrees, int samples, bool swapped = false);
+
 class BrdfEvaluation {
 public:
     // Throws UsageError when the effect has no BrdfGrid technique.
@@ -24,7 +31,6 @@ public:
     image::FloatImage plane(double incidence_degrees, int samples, bool swapped = false);
 
 private:
-    image::FloatImage render(int width, int height, const std::string& mode, bool swapped, double incidence);
     std::unique_ptr<context::Context> context_;
     std::unique_ptr<render::EffectSession> session_;
     std::string path_;

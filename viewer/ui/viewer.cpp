@@ -27,6 +27,8 @@
 #include "ui/display_pass.hpp"
 #include "ui/effect_state.hpp"
 #include "ui/error_list.hpp"
+#include "app/brdf_evaluation.hpp"
+#include "ui/brdf_panel.hpp"
 #include "ui/file_browser.hpp"
 #include "ui/imgui_layer.hpp"
 #include "ui/pick_panel.hpp"
@@ -399,6 +401,10 @@ private:
                 plugin_panel_.draw(session());
                 ImGui::EndTabItem();
             }
+            if (ImGui::BeginTabItem("BRDF", nullptr, tab_flags("BRDF"))) {
+                brdf_panel_.draw(session());
+                ImGui::EndTabItem();
+            }
             ImGui::EndTabBar();
         }
         if (!status_.empty()) {
@@ -637,9 +643,19 @@ private:
             skybox_name_ = args[0] == "off" ? "" : args[0];
             if (!skybox_name_.empty() && !skybox_texture()) throw UsageError("no cube map texture '" + args[0] + "' in the effect");
         } else if (a.verb == "tab") {
-            static const std::set<std::string> tabs = {"Effect", "Scene", "Textures", "Pick", "View", "Plugins"};
-            if (!tabs.count(args[0])) throw UsageError("no tab '" + args[0] + "' (Effect, Scene, Textures, Pick, View, Plugins)");
+            static const std::set<std::string> tabs = {"Effect", "Scene", "Textures", "Pick", "View", "Plugins", "BRDF"};
+            if (!tabs.count(args[0])) throw UsageError("no tab '" + args[0] + "' (Effect, Scene, Textures, Pick, View, Plugins, BRDF)");
             requested_tab_ = args[0];
+            wait_frames_ = 1;
+        } else if (a.verb == "brdf-check") {  // as the BRDF tab's Check button; prints the figures as JSON
+            if (!session() || !app::has_brdf_grid(*session())) throw UsageError("brdf-check: the effect has no BRDF grid (open a .brdf file)");
+            const app::BrdfCheck& c = brdf_panel_.check(*session());
+            std::cout << nlohmann::json{{"brdf_check", {{"max_albedo", c.max_albedo}, {"conserves_energy", c.conserves_energy},
+                                                        {"reciprocity_max_relative", c.reciprocity}, {"negative_samples", c.negative},
+                                                        {"non_finite_samples", c.non_finite}}}}
+                             .dump()
+                      << std::endl;
+            requested_tab_ = "BRDF";
             wait_frames_ = 1;
         } else if (a.verb == "inspect-texture") {
             if (!session() || !session()->resources().find(args[0])) throw UsageError("inspect-texture: the effect has no texture '" + args[0] + "'");
@@ -735,6 +751,7 @@ private:
     double frame_seconds_ = 0;
     PickPanel pick_;
     PluginPanel plugin_panel_;
+    BrdfPanel brdf_panel_;
     int plugin_start_frame_ = 0;  // plugin-start: frames drawn while the plugin runs
     std::chrono::steady_clock::time_point plugin_start_time_, wait_started_;
     std::string requested_tab_;

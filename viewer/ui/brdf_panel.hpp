@@ -1,0 +1,36 @@
+// The BRDF tab: for an effect with the BRDF grid (every .brdf file), BRDF Explorer's polar plot of the
+// plane of incidence, live as parameters change, and on request the physics checks of brdf-check
+// (directional albedo against incidence, reciprocity, negative and NaN values). Values come from the
+// GPU through the viewer's own session (app/brdf_evaluation.hpp).
+#pragma once
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/brdf_check.hpp"
+#include "render/effect_session.hpp"
+
+namespace fxview::ui {
+
+class BrdfPanel {
+public:
+    void draw(render::EffectSession* session);
+    // The checks at the current parameter values (the Check button; the script verb brdf-check).
+    const app::BrdfCheck& check(render::EffectSession& session);
+
+private:
+    void update_plane(render::EffectSession& session);
+
+    float incidence_ = 30.0f;
+    bool logarithmic_ = false;
+    std::vector<double> plane_;  // mean of R, G, B across the plane of incidence
+    const void* plotted_effect_ = nullptr;
+    std::map<std::string, std::vector<double>> plotted_values_;
+    float plotted_incidence_ = -1.0f;
+    std::optional<app::BrdfCheck> check_;
+    std::map<std::string, std::vector<double>> checked_values_;
+    std::string error_;
+};
+
+}  // namespace fxview::ui
