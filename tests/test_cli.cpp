@@ -698,4 +698,25 @@ TEST_CASE("brdf-plot writes every view at the asked size, and its CSV holds the 
     }
     CHECK(rows == 721);
     CHECK(run("brdf-plot " + dir + "lambert.brdf " + dir + "lambert.brdf --view sphere --out " + temp_path("two.png")).exit_code == 2);
+    CHECK(run("brdf-plot --view polar --out " + temp_path("nothing.png")).exit_code == 2);
+
+    // Measured data beside an analytic file: a MERL table of a Lambertian kd = 0.5 (synthetic, every bin
+    // at its centre) reads kd/π across the plane, and its albedo by the same quadrature is kd.
+    const std::string merl = temp_path("lambert.binary"), measured_csv = temp_path("measured.csv");
+    REQUIRE(run("brdf-grid --model phong --param ks=0 --param kd=0.5,0.5,0.5 --merl-out --out " + merl).exit_code == 0);
+    REQUIRE(run("brdf-plot " + dir + "lambert.brdf --measured " + merl + " --out " + temp_path("measured.png") + " --csv " + measured_csv).exit_code == 0);
+    std::ifstream measured(measured_csv);
+    int measured_rows = 0;
+    while (std::getline(measured, line))
+        if (line.find("(measured)") != std::string::npos) {
+            ++measured_rows;
+            CHECK(std::stod(line.substr(line.find("(measured),") + 11)) == doctest::Approx(0.5 / std::numbers::pi).epsilon(1e-6));
+        }
+    CHECK(measured_rows == 721);
+    const std::string albedo_csv = temp_path("measured-albedo.csv");
+    REQUIRE(run("brdf-plot --measured " + merl + " --view albedo --out " + temp_path("measured-albedo.png") + " --csv " + albedo_csv).exit_code == 0);
+    std::ifstream albedo(albedo_csv);
+    std::getline(albedo, line);
+X
+    while (std::getline(albedo, line)) CHECK(std::stod(line.substr(line.find("(measured),") + 11)) == doctest::Approx(0.5).epsilon(0.015));
 }

@@ -1,6 +1,8 @@
 // `fxview brdf-plot FILE... --view polar|albedo|sphere --out P.png [--csv F.csv]`: BRDF Explorer's
 // views, headless. Values come from the GPU (app/brdf_evaluation.hpp), so any .brdf file works.
+#include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -13,6 +15,7 @@
 #include "app/scene_options.hpp"
 #include "app/value_parsing.hpp"
 #include "core/error.hpp"
+#include "fit/merl.hpp"
 #include "image/image_file.hpp"
 
 namespace fxview::app {
@@ -22,11 +25,34 @@ constexpr int kPlaneSamples = 721;  // every quarter degree across the plane of 
 
 double mean_rgb(const float* p) { return (static_cast<double>(p[0]) + p[1] + p[2]) / 3.0; }
 
+// A measured BRDF laid out as the GPU's grid (app/brdf_check.hpp), so that the same quadrature gives
+// its albedo: f(l, v), or f(v, l) when swapped.
+image::FloatImage tabulate_on_grid(const fit::MerlBrdf& merl, bool swapped) {
+    image::FloatImage grid(kGridWidth, kGridHeight, 4);
+    for (int tile = 0; tile < kGridIncidences; ++tile) {
+        const double ti = grid_incidence_degrees(tile) * std::numbers::pi / 180.0;
+        const glm::dvec3 l(std::sin(ti), 0.0, std::cos(ti));
+        const int x0 = (tile % kGridTilesX) * kGridTile, y0 = (tile / kGridTilesX) * kGridTile;
+        for (int b = 0; b < kGridTile; ++b) {
+            const double mu = (b + 0.5) / kGridTile, s = std::sqrt(std::max(1.0 - mu * mu, 0.0));
+            for (int a = 0; a < kGridTile; ++a) {
+                const double phi = 2.0 * std::numbers::pi * (a + 0.5) / kGridTile;
+                const glm::dvec3 v(s * std::cos(phi), s * std::sin(phi), mu);
+                const std::array<double, 3> f = swapped ? merl.lookup(v, l) : merl.lookup(l, v);
+                float* p = grid.pixel(x0 + a, kGridHeight - 1 - (y0 + b));  // rows from the top, as read back
+                for (int c = 0; c < 3; ++c) p[c] = static_cast<float>(f[static_cast<size_t>(c)]);
+                p[3] = 1.0f;
+            }
+        }
+    }
+    return grid;
+}
+
 }  // namespace
 
 CommandRunner add_brdf_plot_command(CLI::App& app) {
     struct Options {
-        std::vector<std::string> files;
+        std::vector<std::string> files, measured;
         std::vector<std::string> sets;
         std::string view = "polar", out, csv, size = "800x600", backend = "egl";
         double incidence = 30;
@@ -34,7 +60,8 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
     };
     auto o = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("brdf-plot", "Plot BRDFs (.brdf files): polar plot of the plane of incidence, albedo, lit sphere");
-    command->add_option("files", o->files, "One or more .brdf files (overlaid in the polar and albedo views)")->required();
+    command->add_option("files", o->files, "One or more .brdf files (overlaid in the polar and albedo views)");
+    command->add_option("--measured", o->measured, "A MERL .binary file to overlay (repeatable; polar and albedo views)");
     command->add_option("--view", o->view, "polar (default), albedo or sphere")->check(CLI::IsMember({"polar", "albedo", "sphere"}));
     command->add_option("--out", o->out, "PNG (or EXR/PFM for the sphere) to write")->required();
     command->add_option("--csv", o->csv, "Also write the plotted values as CSV");
@@ -45,8 +72,9 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
     command->add_option("--backend", o->backend, "egl (default), egl-device or osmesa");
     return [o] {
         const glm::ivec2 size = parse_size("--size", o->size);
+        if (o->files.empty() && o->measured.empty()) throw UsageError("brdf-plot needs a .brdf file or --measured FILE.binary");
         if (o->view == "sphere") {
-            if (o->files.size() != 1) throw UsageError("brdf-plot --view sphere draws one file");
+            if (o->files.size() != 1 || !o->measured.empty()) throw UsageError("brdf-plot --view sphere draws one .brdf file");
             SceneOptions scene;
             scene.size = o->size;
             scene.backend = o->backend;
@@ -60,6 +88,13 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
         std::vector<BrdfSeries> series;
         std::vector<std::vector<std::array<double, 3>>> rgb;  // per file, per sample, for the CSV
         std::vector<double> incidences;
+        const auto add_albedo = [&](const BrdfCheck& check, BrdfSeries& s, std::vector<std::array<double, 3>>& values) {
+            incidences = check.incidence_degrees;
+            for (const auto& albedo : check.albedo) {
+                s.values.push_back((albedo[0] + albedo[1] + albedo[2]) / 3.0);
+                values.push_back(albedo);
+            }
+        };
         for (const auto& file : o->files) {
             EffectOptions effect;
             effect.path = file;
@@ -75,12 +110,27 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
                     values.push_back({p[0], p[1], p[2]});
                 }
             } else {
-                const BrdfCheck check = analyse_brdf_grid(evaluation.grid(false), evaluation.grid(true));
-                incidences = check.incidence_degrees;
-                for (const auto& albedo : check.albedo) {
-                    s.values.push_back((albedo[0] + albedo[1] + albedo[2]) / 3.0);
-                    values.push_back(albedo);
+                add_albedo(analyse_brdf_grid(evaluation.grid(false), evaluation.grid(true)), s, values);
+            }
+            series.push_back(std::move(s));
+            rgb.push_back(std::move(values));
+        }
+        // Measured data: the same directions, looked up in the table on the CPU.
+        for (const auto& file : o->measured) {
+            const fit::MerlBrdf merl = fit::read_merl(file);
+            BrdfSeries s{std::filesystem::path(file).stem().string() + " (measured)", {}};
+            std::vector<std::array<double, 3>> values;
+            if (o->view == "polar") {
+                const double ti = o->incidence * std::numbers::pi / 180.0;
+                const glm::dvec3 l(std::sin(ti), 0.0, std::cos(ti));
+                for (int k = 0; k < kPlaneSamples; ++k) {
+                    const double to = (-90.0 + 180.0 * (k + 0.5) / kPlaneSamples) * std::numbers::pi / 180.0;
+                    const std::array<double, 3> f = merl.lookup(l, glm::dvec3(std::sin(to), 0.0, std::cos(to)));
+                    s.values.push_back((f[0] + f[1] + f[2]) / 3.0);
+                    values.push_back(f);
                 }
+            } else {
+                add_albedo(analyse_brdf_grid(tabulate_on_grid(merl, false), tabulate_on_grid(merl, true)), s, values);
             }
             series.push_back(std::move(s));
             rgb.push_back(std::move(values));
