@@ -9,7 +9,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 action=${1:-replay}
-harnesses=(fuzz_effect fuzz_texture fuzz_spectral fuzz_brdf_data fuzz_obj fuzz_preset)
+harnesses=(fuzz_effect fuzz_brdf_file fuzz_texture fuzz_spectral fuzz_brdf_data fuzz_obj fuzz_preset)
 # Every report is fatal; memory per input is bounded the way users expect fxview to bound it.
 export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1:allocator_may_return_null=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
@@ -37,6 +37,7 @@ seeds() {
         i=$((i + 1))
       done ;;
     fuzz_spectral) find /usr/share/colord/illuminant /usr/share/colord/ref -maxdepth 1 -type f -size -64k 2>/dev/null | head -20 | while read -r f; do cp "$f" "$out/"; done ;;
+    fuzz_brdf_file) find "$root/tests/effects" -name '*.brdf' | while read -r f; do cp "$f" "$out/"; done ;;
     fuzz_brdf_data) cp "$root/textures/sample-brdf.csv" "$out/" ;;
     fuzz_preset) find "$root/effects" -name '*.json' | while read -r f; do cp "$f" "$out/"; done ;;
   esac
