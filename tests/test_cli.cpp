@@ -663,6 +663,14 @@ TEST_CASE("brdf-check: albedo, reciprocity and energy against known answers") {
     CHECK(wrong["max_albedo"].get<double>() == doctest::Approx(3.0).epsilon(1e-3));
     CHECK(wrong["max_albedo_incidence_deg"].get<double>() == 1.0);
     CHECK(brdf_check("not_reciprocal.brdf")["conserves_energy"] == true);
+    // The same checks for an .fx effect that follows the BRDF convention (defines BRDF(), includes
+    // brdf_grid.glsl): without its specular lobe it is Lambert, so its albedo is its diffuse reflectance.
+    const Result convention = run("brdf-check " + std::string(FXVIEW_TEST_EFFECTS) + "/valid/brdf_convention.fx --json --set Specular=0");
+    REQUIRE(convention.exit_code == 0);
+    for (const auto& row : nlohmann::json::parse(convention.out)["albedo"]) {
+        CHECK(row["rgb"][0].get<double>() == doctest::Approx(0.5).epsilon(1e-4));
+        CHECK(row["rgb"][2].get<double>() == doctest::Approx(0.3).epsilon(1e-4));
+    }
     // An effect without the grid technique is refused with a usage error.
     CHECK(run("brdf-check " + std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/debug.fx").exit_code == 2);
 }
