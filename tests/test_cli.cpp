@@ -677,10 +677,11 @@ TEST_CASE("brdf-check: albedo, reciprocity and energy against known answers") {
 
 TEST_CASE("brdf-plot writes every view at the asked size, and its CSV holds the GPU's values") {
     const std::string dir = std::string(FXVIEW_TEST_EFFECTS) + "/brdf/";
-    for (const char* view : {"polar", "albedo", "sphere"}) {
+    for (const char* view : {"polar", "albedo", "sphere", "lobe", "slice"}) {
         CAPTURE(view);
         const std::string out = temp_path(std::string("plot-") + view + ".png");
-        const std::string files = std::string(view) == "sphere" ? dir + "lambert.brdf" : dir + "lambert.brdf " + dir + "phong_old_dialect.brdf";
+        const bool single = std::string(view) == "sphere" || std::string(view) == "lobe" || std::string(view) == "slice";
+        const std::string files = single ? dir + "phong_old_dialect.brdf" : dir + "lambert.brdf " + dir + "phong_old_dialect.brdf";
         const Result r = run("brdf-plot " + files + " --view " + view + " --size 320x200 --out " + out + (std::string(view) == "polar" ? " --log" : ""));
         REQUIRE(r.exit_code == 0);
         // PNG: width and height are the big-endian words at bytes 16 and 20 (the IHDR chunk).

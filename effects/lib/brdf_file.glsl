@@ -27,6 +27,9 @@ GLSLShader FxBrdfLitFS {
     void main() {
         float nl;
         vec3 f = fx_brdf_at(fs_in.world_position, fs_in.normal, fs_in.tangent, nl);
+        // A BRDF undefined at some directions (0/0, acos of 1 + rounding) is drawn black here, so that
+        // it cannot spread through filtering; BrdfValue keeps the raw value, brdf-check counts them.
+        if (any(isnan(f)) || any(isinf(f))) f = vec3(0.0);
         color = vec4(f * LightIrradiance * max(nl, 0.0), 1.0);
         fx_capture();
     }

@@ -27,7 +27,8 @@ BrdfEvaluation::~BrdfEvaluation() {
 
 namespace {
 
-image::FloatImage render_grid(render::EffectSession& session, int width, int height, const std::string& mode, bool swapped, double incidence) {
+image::FloatImage render_grid(render::EffectSession& session, int width, int height, const std::string& mode, bool swapped, double incidence,
+                              double phi_d = 90.0) {
     const std::string technique = session.technique();
     const effect::ParameterValues saved = session.values();
     struct Restore {
@@ -44,6 +45,7 @@ image::FloatImage render_grid(render::EffectSession& session, int width, int hei
     effect::set_value_from_text(session.effect(), values, "FxGridMode=" + mode);
     effect::set_value_from_text(session.effect(), values, std::string("FxSwapArguments=") + (swapped ? "true" : "false"));
     effect::set_value_from_text(session.effect(), values, "FxIncidence=" + std::to_string(incidence));
+    effect::set_value_from_text(session.effect(), values, "FxPhiD=" + std::to_string(phi_d));
     gl::RenderTarget target({width, height, 1, 0});
     session.render(scene::Scene{}, target);
     return target.read_color(0);
@@ -63,6 +65,14 @@ image::FloatImage evaluate_brdf_grid(render::EffectSession& session, bool swappe
 
 image::FloatImage evaluate_brdf_plane(render::EffectSession& session, double incidence_degrees, int samples, bool swapped) {
     return render_grid(session, samples, 1, "1", swapped, incidence_degrees);
+}
+
+image::FloatImage evaluate_brdf_slice(render::EffectSession& session, double phi_d_degrees, int width, int height) {
+    return render_grid(session, width, height, "2", false, 0.0, phi_d_degrees);
+}
+
+image::FloatImage evaluate_brdf_hemisphere(render::EffectSession& session, double incidence_degrees, int width, int height) {
+    return render_grid(session, width, height, "3", false, incidence_degrees);
 }
 
 image::FloatImage BrdfEvaluation::grid(bool swapped) { return evaluate_brdf_grid(*session_, swapped); }

@@ -18,6 +18,12 @@ namespace fxview::app {
 bool has_brdf_grid(const render::EffectSession& session);
 image::FloatImage evaluate_brdf_grid(render::EffectSession& session, bool swapped);
 image::FloatImage evaluate_brdf_plane(render::EffectSession& session, double incidence_degrees, int samples, bool swapped = false);
+// Rusinkiewicz's slice at difference azimuth φd: θh from 0 to 90° across, θd from 0 to 90° down the
+// rows from the bottom (image rows from the top: θd decreasing), pixel centres; 0 below the surface.
+image::FloatImage evaluate_brdf_slice(render::EffectSession& session, double phi_d_degrees, int width, int height);
+// The hemisphere for incidence θi: φo = 360° (a + ½) / width across, θo = 90° (b + ½) / height up from
+// the bottom row.
+image::FloatImage evaluate_brdf_hemisphere(render::EffectSession& session, double incidence_degrees, int width, int height);
 
 class BrdfEvaluation {
 public:
@@ -29,6 +35,7 @@ public:
     // f(L, V) at `samples` outgoing directions across the plane of incidence, θo from -90° (mirror
     // side) to 90°, sample k at θo = -90 + 180 (k + ½) / samples, for incidence θi in degrees.
     image::FloatImage plane(double incidence_degrees, int samples, bool swapped = false);
+    render::EffectSession& session() { return *session_; }
 
 private:
     std::unique_ptr<context::Context> context_;

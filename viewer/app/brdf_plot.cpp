@@ -124,4 +124,59 @@ image::FloatImage albedo_chart(const std::vector<BrdfSeries>& series, const std:
     return canvas.take();
 }
 
+image::FloatImage lobe_chart(const image::FloatImage& hemisphere, const std::string& name, double incidence_degrees, ChartSize size) {
+    Canvas canvas(size.width, size.height);
+    const int columns = hemisphere.width, rows = hemisphere.height;
+    const auto value = [&](int a, int b) {  // b counts θo from 0 (the bottom row)
+        const float* p = hemisphere.pixel(a, rows - 1 - b);
+        const double f = (static_cast<double>(p[0]) + p[1] + p[2]) / 3.0;
+        return std::isfinite(f) ? std::max(f, 0.0) : 0.0;
+    };
+    double peak = 0;
+    for (int b = 0; b < rows; ++b)
+        for (int a = 0; a < columns; ++a) peak = std::max(peak, value(a, b));
+    if (!(peak > 0)) peak = 1;
+    // Seen from azimuth -60° and 25° above the surface, orthographically.
+    const double azimuth = -60.0 * std::numbers::pi / 180.0, elevation = 25.0 * std::numbers::pi / 180.0;
+    const float scale = 0.42f * std::min(size.width, size.height), cx = size.width * 0.5f, cy = size.height * 0.68f;
+    const auto project = [&](double x, double y, double z) {
+        const double u = x * std::cos(azimuth) - y * std::sin(azimuth);
+        const double depth = x * std::sin(azimuth) + y * std::cos(azimuth);
+        const double w = z * std::cos(elevation) - depth * std::sin(elevation);
+        return std::pair{cx + scale * static_cast<float>(u), cy - scale * static_cast<float>(w)};
+    };
+    const auto surface = [&](int a, int b) {
+        const double phi = 2.0 * std::numbers::pi * (a + 0.5) / columns, theta = 0.5 * std::numbers::pi * (b + 0.5) / rows;
+        const double r = value(a % columns, b) / peak;
+        return project(r * std::sin(theta) * std::cos(phi), r * std::sin(theta) * std::sin(phi), r * std::cos(theta));
+    };
+    // The surface's unit circle and the light's direction.
+    for (int k = 0; k < 72; ++k) {
+        const double p0 = 2.0 * std::numbers::pi * k / 72, p1 = 2.0 * std::numbers::pi * (k + 1) / 72;
+        const auto [ax, ay] = project(std::cos(p0), std::sin(p0), 0.0);
+        const auto [bx, by] = project(std::cos(p1), std::sin(p1), 0.0);
+        canvas.line(ax, ay, bx, by, kGrid, 1.0f);
+    }
+    const double ti = incidence_degrees * std::numbers::pi / 180.0;
+    const auto [ox, oy] = project(0, 0, 0);
+    const auto [lx, ly] = project(std::sin(ti), 0.0, std::cos(ti));
+    canvas.line(ox, oy, lx, ly, Rgb{0.95f, 0.7f, 0.1f}, 2.5f);
+    const Rgb ink = image::palette(0);
+    for (int b = 0; b < rows; b += std::max(1, rows / 12))
+        for (int a = 0; a < columns; ++a) {
+            const auto [ax, ay] = surface(a, b);
+            const auto [bx, by] = surface(a + 1, b);
+            canvas.line(ax, ay, bx, by, ink, 1.0f);
+        }
+    for (int a = 0; a < columns; a += std::max(1, columns / 24))
+        for (int b = 0; b + 1 < rows; ++b) {
+            const auto [ax, ay] = surface(a, b);
+            const auto [bx, by] = surface(a, b + 1);
+            canvas.line(ax, ay, bx, by, ink, 1.0f);
+        }
+    canvas.text(12, 10, name + ": f over the hemisphere, theta_i " + image::chart_number(incidence_degrees) + " deg", kInk);
+    canvas.text(12, 32, "radius f / " + image::chart_number(peak) + "; light in yellow", kMuted);
+    return canvas.take();
+}
+
 }  // namespace fxview::app

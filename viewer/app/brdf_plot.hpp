@@ -3,6 +3,7 @@
 // against the angle of incidence with the line of energy conservation.
 #pragma once
 #include <string>
+
 #include <vector>
 
 #include "image/image.hpp"
@@ -22,5 +23,8 @@ struct ChartSize {
 image::FloatImage polar_chart(const std::vector<BrdfSeries>& series, double incidence_degrees, bool logarithmic, ChartSize size);
 // `series` values at `incidence_degrees`.
 image::FloatImage albedo_chart(const std::vector<BrdfSeries>& series, const std::vector<double>& incidence_degrees, ChartSize size);
+// The 3D lobe f(l, ω) (mean of R, G, B) over the hemisphere as a wireframe seen from above and aside;
+// `hemisphere` as evaluate_brdf_hemisphere lays it out (φo across, θo up from the bottom row).
+image::FloatImage lobe_chart(const image::FloatImage& hemisphere, const std::string& name, double incidence_degrees, ChartSize size);
 
 }  // namespace fxview::app

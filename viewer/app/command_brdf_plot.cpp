@@ -1,5 +1,6 @@
 // `fxview brdf-plot FILE... --view polar|albedo|sphere --out P.png [--csv F.csv]`: BRDF Explorer's
 // views, headless. Values come from the GPU (app/brdf_evaluation.hpp), so any .brdf file works.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -55,14 +56,16 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
         std::vector<std::string> files, measured;
         std::vector<std::string> sets;
         std::string view = "polar", out, csv, size = "800x600", backend = "egl";
-        double incidence = 30;
+        double incidence = 30, phi_d = 90;
         bool logarithmic = false;
     };
     auto o = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("brdf-plot", "Plot BRDFs (.brdf files): polar plot of the plane of incidence, albedo, lit sphere");
     command->add_option("files", o->files, "One or more .brdf files (overlaid in the polar and albedo views)");
     command->add_option("--measured", o->measured, "A MERL .binary file to overlay (repeatable; polar and albedo views)");
-    command->add_option("--view", o->view, "polar (default), albedo or sphere")->check(CLI::IsMember({"polar", "albedo", "sphere"}));
+    command->add_option("--view", o->view, "polar (default), albedo, lobe, slice or sphere")
+        ->check(CLI::IsMember({"polar", "albedo", "lobe", "slice", "sphere"}));
+    command->add_option("--phi-d", o->phi_d, "Difference azimuth of the slice view, degrees")->check(CLI::Range(0.0, 180.0));
     command->add_option("--out", o->out, "PNG (or EXR/PFM for the sphere) to write")->required();
     command->add_option("--csv", o->csv, "Also write the plotted values as CSV");
     command->add_option("--incidence", o->incidence, "Angle of incidence for the polar view, degrees")->check(CLI::Range(0.0, 89.0));
@@ -82,6 +85,34 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
             scene.effect.technique = "Lit";
             scene.effect.sets = o->sets;
             image::write_image(o->out, render_offscreen(to_render_request(scene)));
+            std::printf("wrote %s (%dx%d)\n", o->out.c_str(), size.x, size.y);
+            return 0;
+        }
+        if (o->view == "lobe" || o->view == "slice") {
+            if (o->files.size() != 1 || !o->measured.empty()) throw UsageError("brdf-plot --view " + o->view + " draws one .brdf file");
+            EffectOptions effect;
+            effect.path = o->files[0];
+            effect.sets = o->sets;
+            BrdfEvaluation evaluation(effect, o->backend);
+            if (o->view == "lobe") {
+                const image::FloatImage hemisphere = evaluate_brdf_hemisphere(evaluation.session(), o->incidence, 144, 60);
+                image::write_image(o->out, lobe_chart(hemisphere, std::filesystem::path(o->files[0]).stem().string(), o->incidence, {size.x, size.y}));
+            } else {
+                // The values themselves in EXR/PFM; in PNG scaled so that the 99th percentile is white.
+                image::FloatImage slice = evaluate_brdf_slice(evaluation.session(), o->phi_d, size.x, size.y);
+                std::vector<float> values;
+                for (int y = 0; y < slice.height; ++y)
+                    for (int x = 0; x < slice.width; ++x) values.push_back(slice.pixel(x, y)[1]);
+                std::nth_element(values.begin(), values.begin() + values.size() * 99 / 100, values.end());
+                const float white = values[values.size() * 99 / 100];
+                const bool png = std::filesystem::path(o->out).extension() == ".png";
+                if (png && white > 0)
+                    for (int y = 0; y < slice.height; ++y)
+                        for (int x = 0; x < slice.width; ++x)
+                            for (int c = 0; c < 3; ++c) slice.pixel(x, y)[c] /= white;
+                image::write_image(o->out, slice);
+                if (png) std::printf("slice at phi_d = %g deg: theta_h 0-90 deg across, theta_d 90 (top) to 0 deg; white = f of %g\n", o->phi_d, white);
+            }
             std::printf("wrote %s (%dx%d)\n", o->out.c_str(), size.x, size.y);
             return 0;
         }
