@@ -168,7 +168,7 @@ TEST_CASE("every analytic BRDF matches viewer/brdf, also with sharp highlights; 
     request.width = request.height = 96;
     request.effect.path = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/analytic.fx";
     const auto techniques = app::technique_names(request.effect);
-    CHECK(techniques.size() == 10);
+    CHECK(techniques.size() == 11);
     for (const auto& variant : std::vector<std::vector<std::string>>{
              {},
              {"Roughness=0.1", "Metallic=0.3", "PhongExponent=400", "PrintedBeckmann=true", "BeckmannM=0.1", "Nu=1000", "Nv=5",
@@ -191,7 +191,8 @@ TEST_CASE("every analytic BRDF matches viewer/brdf, also with sharp highlights; 
              {"Lambert", "BaseColor=0.99,0.71,0.29"}, {"PBR", "Roughness=0.41"}, {"PBR", "Metallic=0.98"},
              {"ModifiedPhong", "PhongExponent=41"}, {"CookTorranceBeckmann", "Eta=1.52"}, {"CookTorranceBeckmann", "PrintedBeckmann=true"},
              {"AshikhminShirley", "Nu=22"}, {"AshikhminShirleyFit", "FitExponent=52"}, {"CookTorranceGGX", "GGXF0=0.91,0.6,0.3"},
-             {"CookTorranceBeckmannSchlick", "CTSSlope=0.21"}, {"BlinnPhong", "BlinnExponent=52"}, {"Ward", "WardAlpha=0.16"}}) {
+             {"CookTorranceBeckmannSchlick", "CTSSlope=0.21"}, {"BlinnPhong", "BlinnExponent=52"}, {"Ward", "WardAlpha=0.16"},
+             {"BrdfGrid", "Roughness=0.41"}, {"BrdfGrid", "BrdfModel=CookTorranceGGX"}, {"BrdfGrid", "FxGridMode=1"}}) {
         const std::string technique = entry.first, wrong = entry.second;  // no structured binding: CAPTURE (clang 14)
         CAPTURE(technique);
         CAPTURE(wrong);

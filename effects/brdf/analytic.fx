@@ -192,3 +192,37 @@ technique AshikhminShirleyFit { pass p0 { VertexShader = StandardVS; FragmentSha
 // parameters here (GGXDiffuse, GGXF0, GGXAlpha) and its technique to CookTorranceGGX.
 plugin FitCookTorranceGGX < string Type = "brdf-fit"; string UIName = "Fit Cook-Torrance (GGX) to a measured BRDF file";
                             string DataFile = "sample-brdf.csv"; string Model = "ggx"; >;
+
+// The BRDF convention (docs/effect-format.md): BRDF() of the model chosen by BrdfModel, for the
+// direction grid of brdf-check, brdf-plot and the viewer's BRDF tab. They set BrdfModel to the
+// technique in use; `--set BrdfModel=NAME` chooses one explicitly.
+uniform int BrdfModel < string UIName = "Model of the BRDF grid"; string UIWidget = "combo"; string UIGroup = "BRDF grid";
+                        string UIItems = "Lambert|PBR|ModifiedPhong|CookTorranceBeckmann|AshikhminShirley|AshikhminShirleyFit|CookTorranceGGX|CookTorranceBeckmannSchlick|BlinnPhong|Ward"; > = 1;
+
+vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) {
+    Frame f;
+    f.n = N;
+    f.l = L;
+    f.v = V;
+    f.t = X;
+    f.h = normalize(L + V);
+    f.nl = dot(N, L);
+    f.nv = dot(N, V);
+    f.nh = dot(N, f.h);
+    f.vh = dot(V, f.h);
+    if (!visible(f)) return vec3(0.0);
+    switch (BrdfModel) {
+        case 0: return BaseColor / kPi;
+        case 1: return metallic_roughness(f, BaseColor, Metallic, Roughness);
+        case 2: return modified_phong(f, PhongDiffuse, PhongSpecular, PhongExponent);
+        case 3: return cook_torrance_beckmann(f, CTDiffuse, CTSpecular, BeckmannM, Eta, PrintedBeckmann);
+        case 4: return ashikhmin_shirley(f, ASDiffuse, ASSpecular, Nu, Nv);
+        case 5: return ashikhmin_shirley_fit(f, FitDiffuse, FitSpecular, FitExponent);
+        case 6: return cook_torrance_ggx(f, GGXDiffuse, GGXF0, GGXAlpha);
+        case 7: return cook_torrance_beckmann_schlick(f, CTSDiffuse, CTSF0, CTSSlope);
+        case 8: return blinn_phong(f, BlinnDiffuse, BlinnSpecular, BlinnExponent);
+        default: return ward_isotropic(f, WardDiffuse, WardSpecular, WardAlpha);
+    }
+}
+
+#include "brdf_grid.glsl"

@@ -26,7 +26,13 @@ uniform float FxPhiD < string UIName = "Difference azimuth (slice)"; float UIMin
 
 GLSLShader FxBrdfGridFS {
     layout(location = 0) out vec4 color;
+    // For GPU-vs-CPU comparisons (docs/cpu-reference.md): coverage in attachment 1, and in attachment
+    // 5 the fragment's position and the viewport's size, from which a reference rebuilds the directions.
+    layout(location = 1) out vec4 fx_capture_position;
+    layout(location = 5) out vec4 fx_capture_footprint;
     void main() {
+        fx_capture_position = vec4(0.0, 0.0, 0.0, 1.0);
+        fx_capture_footprint = vec4(gl_FragCoord.xy, FxViewportSize.xy);
         ivec2 p = ivec2(gl_FragCoord.xy);
         vec3 n = vec3(0.0, 0.0, 1.0), x = vec3(1.0, 0.0, 0.0), y = vec3(0.0, 1.0, 0.0);
         if (FxGridMode == 2) {

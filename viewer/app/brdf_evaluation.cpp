@@ -1,5 +1,7 @@
 #include "app/brdf_evaluation.hpp"
 
+#include <algorithm>
+
 #include "app/brdf_check.hpp"
 #include "core/error.hpp"
 #include "effect/parameter_values.hpp"
@@ -19,6 +21,7 @@ BrdfEvaluation::BrdfEvaluation(const EffectOptions& effect, const std::string& b
     without_technique.technique.clear();
     session_ = open_effect_session(without_technique);
     if (!has_brdf_grid(*session_)) throw UsageError(effect.path + " has no BrdfGrid technique: BRDF checks and plots work on .brdf files");
+    if (!effect.technique.empty()) follow_technique(*session_, effect.technique);
 }
 
 BrdfEvaluation::~BrdfEvaluation() {
@@ -57,6 +60,12 @@ bool has_brdf_grid(const render::EffectSession& session) {
     for (const auto& technique : session.effect().techniques)
         if (technique.name == "BrdfGrid") return true;
     return false;
+}
+
+void follow_technique(render::EffectSession& session, const std::string& technique) {
+    const effect::Parameter* model = session.effect().find_parameter("BrdfModel");
+    if (!model || std::find(model->ui.items.begin(), model->ui.items.end(), technique) == model->ui.items.end()) return;
+    effect::set_value_from_text(session.effect(), session.values(), "BrdfModel=" + technique);
 }
 
 image::FloatImage evaluate_brdf_grid(render::EffectSession& session, bool swapped) {

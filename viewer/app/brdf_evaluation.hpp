@@ -16,6 +16,9 @@ namespace fxview::app {
 // the grid or the plane of incidence rendered with its current parameter values. The session's
 // technique and values are left as they were.
 bool has_brdf_grid(const render::EffectSession& session);
+// An effect whose BRDF() serves several models chooses one by a combo parameter BrdfModel listing
+// them by technique name (effects/brdf/analytic.fx): set it to `technique` where it lists it.
+void follow_technique(render::EffectSession& session, const std::string& technique);
 image::FloatImage evaluate_brdf_grid(render::EffectSession& session, bool swapped);
 image::FloatImage evaluate_brdf_plane(render::EffectSession& session, double incidence_degrees, int samples, bool swapped = false);
 // Rusinkiewicz's slice at difference azimuth φd: θh from 0 to 90° across, θd from 0 to 90° down the

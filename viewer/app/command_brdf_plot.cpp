@@ -55,7 +55,7 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
     struct Options {
         std::vector<std::string> files, measured;
         std::vector<std::string> sets;
-        std::string view = "polar", out, csv, size = "800x600", backend = "egl";
+        std::string view = "polar", out, csv, size = "800x600", backend = "egl", technique;
         double incidence = 30, phi_d = 90;
         bool logarithmic = false;
     };
@@ -72,6 +72,7 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
     command->add_flag("--log", o->logarithmic, "Logarithmic radius in the polar view (four decades)");
     command->add_option("--size", o->size, "Image size WxH");
     command->add_option("--set", o->sets, "NAME=VALUE for every file's parameters (repeatable)");
+    command->add_option("-t,--technique", o->technique, "The model of an effect with several (analytic.fx's BrdfModel); the sphere's technique");
     command->add_option("--backend", o->backend, "egl (default), egl-device or osmesa");
     return [o] {
         const glm::ivec2 size = parse_size("--size", o->size);
@@ -82,7 +83,7 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
             scene.size = o->size;
             scene.backend = o->backend;
             scene.effect.path = o->files[0];
-            scene.effect.technique = "Lit";
+            scene.effect.technique = o->technique;  // empty: the default (Lit for .brdf files)
             scene.effect.sets = o->sets;
             image::write_image(o->out, render_offscreen(to_render_request(scene)));
             std::printf("wrote %s (%dx%d)\n", o->out.c_str(), size.x, size.y);
@@ -93,6 +94,7 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
             EffectOptions effect;
             effect.path = o->files[0];
             effect.sets = o->sets;
+            effect.technique = o->technique;
             BrdfEvaluation evaluation(effect, o->backend);
             if (o->view == "lobe") {
                 const image::FloatImage hemisphere = evaluate_brdf_hemisphere(evaluation.session(), o->incidence, 144, 60);
@@ -130,6 +132,7 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
             EffectOptions effect;
             effect.path = file;
             effect.sets = o->sets;
+            effect.technique = o->technique;
             BrdfEvaluation evaluation(effect, o->backend);
             BrdfSeries s{std::filesystem::path(file).stem().string(), {}};
             std::vector<std::array<double, 3>> values;

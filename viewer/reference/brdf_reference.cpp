@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <optional>
+
 
 #include "brdf/models.hpp"
 #include "reference/brdf_sensitivity.hpp"
@@ -42,40 +45,138 @@ const char* kWhy = "float32 against double on radiances of order 1 (relative abo
                    "on llvmpipe below 3e-5 outside highlights); in highlights, where moving n.h by its float "
                    "rounding (2.4e-7) moves the radiance by more, that change is the pixel's slack";
 
+// Each model from the effect's parameters (analytic.fx), shared by the techniques' references and
+// the direction grid's.
+brdf::Lambert lambert(const ReferenceContext& c) { return brdf::Lambert{colour(c, "BaseColor")}; }
+brdf::MetallicRoughness pbr(const ReferenceContext& c) {
+    return brdf::MetallicRoughness{colour(c, "BaseColor"), c.number("Metallic"), c.number("Roughness")};
+}
+brdf::ModifiedPhong modified_phong(const ReferenceContext& c) {
+    return brdf::ModifiedPhong{colour(c, "PhongDiffuse"), c.number("PhongSpecular"), c.number("PhongExponent")};
+}
+brdf::CookTorranceBeckmann cook_torrance_beckmann(const ReferenceContext& c) {
+    return brdf::CookTorranceBeckmann{colour(c, "CTDiffuse"), c.number("CTSpecular"), c.number("BeckmannM"), c.number("Eta"),
+                                      c.number("PrintedBeckmann") != 0.0};
+}
+brdf::AshikhminShirley ashikhmin_shirley(const ReferenceContext& c) {
+    return brdf::AshikhminShirley{colour(c, "ASDiffuse"), colour(c, "ASSpecular"), c.number("Nu"), c.number("Nv")};
+}
+brdf::AshikhminShirleyFit ashikhmin_shirley_fit(const ReferenceContext& c) {
+    return brdf::AshikhminShirleyFit{colour(c, "FitDiffuse"), colour(c, "FitSpecular"), c.number("FitExponent")};
+}
+brdf::CookTorranceGGX cook_torrance_ggx(const ReferenceContext& c) {
+    return brdf::CookTorranceGGX{colour(c, "GGXDiffuse"), colour(c, "GGXF0"), c.number("GGXAlpha")};
+}
+brdf::CookTorranceBeckmannSchlick cook_torrance_beckmann_schlick(const ReferenceContext& c) {
+    return brdf::CookTorranceBeckmannSchlick{colour(c, "CTSDiffuse"), colour(c, "CTSF0"), c.number("CTSSlope")};
+}
+brdf::BlinnPhong blinn_phong(const ReferenceContext& c) {
+    return brdf::BlinnPhong{colour(c, "BlinnDiffuse"), colour(c, "BlinnSpecular"), c.number("BlinnExponent")};
+}
+brdf::Ward ward(const ReferenceContext& c) { return brdf::Ward{colour(c, "WardDiffuse"), colour(c, "WardSpecular"), c.number("WardAlpha")}; }
+
+// f of the model BrdfModel names (its UIItems order), 0 where the light or the eye is below the surface.
+glm::dvec3 grid_model_value(const ReferenceContext& c, const brdf::Directions& d) {
+    if (glm::dot(d.n, d.l) <= 0.0 || glm::dot(d.n, d.v) <= 0.0) return glm::dvec3(0.0);
+    switch (static_cast<int>(c.number("BrdfModel"))) {
+        case 0: return brdf::evaluate(lambert(c), d);
+        case 1: return brdf::evaluate(pbr(c), d);
+        case 2: return brdf::evaluate(modified_phong(c), d);
+        case 3: return brdf::evaluate(cook_torrance_beckmann(c), d);
+        case 4: return brdf::evaluate(ashikhmin_shirley(c), d);
+        case 5: return brdf::evaluate(ashikhmin_shirley_fit(c), d);
+        case 6: return brdf::evaluate(cook_torrance_ggx(c), d);
+        case 7: return brdf::evaluate(cook_torrance_beckmann_schlick(c), d);
+        case 8: return brdf::evaluate(blinn_phong(c), d);
+        default: return brdf::evaluate(ward(c), d);
+    }
+}
+
+// The directions of a pixel of the grid (effects/lib/brdf_grid.glsl), from the captured fragment
+// position and viewport size; empty where the grid draws 0 (tiles past the last incidence, the
+// slice below the surface).
+std::optional<brdf::Directions> grid_directions(const ShadingInput& in, const ReferenceContext& c) {
+    const double fx = in.footprint.x, fy = in.footprint.y, width = in.footprint.z, height = in.footprint.w;
+    const auto radians = [](double degrees) { return degrees * std::numbers::pi / 180.0; };
+    brdf::Directions d{{0, 0, 1}, {}, {}, {1, 0, 0}};
+    switch (static_cast<int>(c.number("FxGridMode"))) {
+        case 1: {
+            const double to = radians(-90.0 + 180.0 * fx / width), ti = radians(c.number("FxIncidence"));
+            d.l = {std::sin(ti), 0, std::cos(ti)};
+            d.v = {std::sin(to), 0, std::cos(to)};
+            break;
+        }
+        case 2: {
+            const double th = radians(90.0 * fx / width), td = radians(90.0 * fy / height), pd = radians(c.number("FxPhiD"));
+            const glm::dvec3 diff(std::sin(td) * std::cos(pd), std::sin(td) * std::sin(pd), std::cos(td));
+            d.l = {diff.x * std::cos(th) + diff.z * std::sin(th), diff.y, -diff.x * std::sin(th) + diff.z * std::cos(th)};
+            const glm::dvec3 h(std::sin(th), 0, std::cos(th));
+            d.v = 2.0 * glm::dot(d.l, h) * h - d.l;
+            if (d.l.z <= 0 || d.v.z <= 0) return std::nullopt;
+            break;
+        }
+        case 3: {
+            const double phi = radians(360.0 * fx / width), to = radians(90.0 * fy / height), ti = radians(c.number("FxIncidence"));
+            d.l = {std::sin(ti), 0, std::cos(ti)};
+            d.v = {std::sin(to) * std::cos(phi), std::sin(to) * std::sin(phi), std::cos(to)};
+            break;
+        }
+        default: {
+            const int px = static_cast<int>(fx), py = static_cast<int>(fy), tile = (py / 256) * 9 + px / 256;
+            if (tile >= 45) return std::nullopt;
+            const double ti = radians(1.0 + 2.0 * tile), mu = (py % 256 + 0.5) / 256.0, phi = 2.0 * std::numbers::pi * (px % 256 + 0.5) / 256.0;
+            const double s = std::sqrt(std::max(1.0 - mu * mu, 0.0));
+            d.l = {std::sin(ti), 0, std::cos(ti)};
+            d.v = {s * std::cos(phi), s * std::sin(phi), mu};
+        }
+    }
+    if (c.number("FxSwapArguments") != 0.0) std::swap(d.l, d.v);
+    return d;
+}
+
+Reference grid_reference() {
+    Reference r;
+    r.shade = [](const ShadingInput& in, const ReferenceContext& c) {
+        const auto d = grid_directions(in, c);
+        const glm::dvec3 f = d ? grid_model_value(c, *d) : glm::dvec3(0.0);
+        return std::array<double, 4>{f.r, f.g, f.b, 1.0};
+    };
+    // In float, n·h near 1 is known to ~2.4e-7 only, and the directions come from float sines and
+    // cosines: where f is steep (sharp lobes, grazing 1/(n.l n.v) terms) that moves it by more than the
+    // tolerance. The slack is the change when the normal tilts by that uncertainty (brdf_sensitivity.hpp),
+    // plus 1e-3 of values above 1: the lobes reach f ~ 1e4, where the dot products behind the exponent
+    // (r·v for Phong, h's azimuth for anisotropic lobes) carry ~10 float roughings each, and an
+    // exponent of 1e4 turns 1e-7 into 1e-3 (measured up to 4e-4 relative on llvmpipe).
+    r.slack = [](const ShadingInput& in, const ReferenceContext& c) {
+        const auto d = grid_directions(in, c);
+        if (!d) return 0.0;
+        const glm::dvec3 base = grid_model_value(c, *d);
+        return tilt_spread([&](const brdf::Directions& at) { return grid_model_value(c, at); }, *d) +
+               1e-3 * std::max(0.0, std::max({std::abs(base.r), std::abs(base.g), std::abs(base.b)}) - 1.0);
+    };
+    r.tolerance = 1e-4;
+    r.why = "the BRDF itself (no light) in float against double; slack: the change when the normal tilts by the float "
+            "uncertainty of n.h, plus 1e-3 of values above 1 (lobes up to f ~ 1e4 from float dot products under high exponents)";
+    return r;
+}
+
 }  // namespace
 
 std::map<std::string, Reference> brdf_references() {
     std::map<std::string, Reference> all;
-    all.emplace("Lambert", make([](const ReferenceContext& c) { return brdf::Lambert{colour(c, "BaseColor")}; }, 1e-4, kWhy));
-    all.emplace("PBR", make([](const ReferenceContext& c) {
-        return brdf::MetallicRoughness{colour(c, "BaseColor"), c.number("Metallic"), c.number("Roughness")};
-    }, 1e-4, kWhy));
-    all.emplace("ModifiedPhong", make([](const ReferenceContext& c) {
-        return brdf::ModifiedPhong{colour(c, "PhongDiffuse"), c.number("PhongSpecular"), c.number("PhongExponent")};
-    }, 1e-4, kWhy));
-    all.emplace("CookTorranceBeckmann", make([](const ReferenceContext& c) {
-        return brdf::CookTorranceBeckmann{colour(c, "CTDiffuse"), c.number("CTSpecular"), c.number("BeckmannM"), c.number("Eta"),
-                                          c.number("PrintedBeckmann") != 0.0};
-    }, 1e-4, kWhy));
-    all.emplace("AshikhminShirley", make([](const ReferenceContext& c) {
-        return brdf::AshikhminShirley{colour(c, "ASDiffuse"), colour(c, "ASSpecular"), c.number("Nu"), c.number("Nv")};
-    }, 1e-4, kWhy));
-    all.emplace("AshikhminShirleyFit", make([](const ReferenceContext& c) {
-        return brdf::AshikhminShirleyFit{colour(c, "FitDiffuse"), colour(c, "FitSpecular"), c.number("FitExponent")};
-    }, 1e-4, kWhy));
-    all.emplace("CookTorranceGGX", make([](const ReferenceContext& c) {
-        return brdf::CookTorranceGGX{colour(c, "GGXDiffuse"), colour(c, "GGXF0"), c.number("GGXAlpha")};
-    }, 1e-4, kWhy));
-    all.emplace("CookTorranceBeckmannSchlick", make([](const ReferenceContext& c) {
-        return brdf::CookTorranceBeckmannSchlick{colour(c, "CTSDiffuse"), colour(c, "CTSF0"), c.number("CTSSlope")};
-    }, 1e-4, kWhy));
-    all.emplace("BlinnPhong", make([](const ReferenceContext& c) {
-        return brdf::BlinnPhong{colour(c, "BlinnDiffuse"), colour(c, "BlinnSpecular"), c.number("BlinnExponent")};
-    }, 1e-4, kWhy));
-    all.emplace("Ward", make([](const ReferenceContext& c) {
-        return brdf::Ward{colour(c, "WardDiffuse"), colour(c, "WardSpecular"), c.number("WardAlpha")};
-    }, 1e-4, kWhy));
+    all.emplace("Lambert", make(lambert, 1e-4, kWhy));
+    all.emplace("PBR", make(pbr, 1e-4, kWhy));
+    all.emplace("ModifiedPhong", make(modified_phong, 1e-4, kWhy));
+    all.emplace("CookTorranceBeckmann", make(cook_torrance_beckmann, 1e-4, kWhy));
+    all.emplace("AshikhminShirley", make(ashikhmin_shirley, 1e-4, kWhy));
+    all.emplace("AshikhminShirleyFit", make(ashikhmin_shirley_fit, 1e-4, kWhy));
+    all.emplace("CookTorranceGGX", make(cook_torrance_ggx, 1e-4, kWhy));
+    all.emplace("CookTorranceBeckmannSchlick", make(cook_torrance_beckmann_schlick, 1e-4, kWhy));
+    all.emplace("BlinnPhong", make(blinn_phong, 1e-4, kWhy));
+    all.emplace("Ward", make(ward, 1e-4, kWhy));
+    all.emplace("BrdfGrid", grid_reference());
     return all;
 }
+
 
 }  // namespace fxview::reference

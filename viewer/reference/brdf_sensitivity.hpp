@@ -32,24 +32,31 @@ glm::dvec3 radiance(const Model& model, const brdf::Directions& d, double irradi
 // about two axes): large only where the lobe is steep, in sharp highlights.
 constexpr double kCosineUlps = 2.4e-7;
 
-template <typename Model>
-double tilt_sensitivity(const Model& model, const brdf::Directions& d, double irradiance) {
+// The largest change of value(d) (RGB) when the normal tilts by the float uncertainty of n·h (above),
+// either way about two axes.
+template <typename Value>
+double tilt_spread(const Value& value, const brdf::Directions& d) {
     const glm::dvec3 h = glm::normalize(d.l + d.v);
     const double cos_h = std::clamp(glm::dot(d.n, h), 0.0, 1.0), sin_h = std::sqrt(1.0 - cos_h * cos_h);
     // The tilt δ that moves n·h by kCosineUlps: cos·δ²/2 + sin·δ = ε.
     const double tilt = cos_h > 0 ? std::max((-sin_h + std::sqrt(sin_h * sin_h + 2.0 * cos_h * kCosineUlps)) / cos_h, 4e-7) : 4e-7;
     glm::dvec3 axis = glm::cross(d.n, h);
     axis = glm::dot(axis, axis) > 1e-20 ? glm::normalize(axis) : d.t;
-    const glm::dvec3 centre = radiance(model, d, irradiance);
+    const glm::dvec3 centre = value(d);
     double spread = 0;
     for (const glm::dvec3& towards : {axis, glm::cross(d.n, axis)})
         for (const double sign : {-1.0, 1.0}) {
             brdf::Directions tilted = d;
             tilted.n = glm::normalize(d.n + sign * tilt * towards);
-            const glm::dvec3 change = glm::abs(radiance(model, tilted, irradiance) - centre);
+            const glm::dvec3 change = glm::abs(value(tilted) - centre);
             spread = std::max({spread, change.r, change.g, change.b});
         }
     return spread;
+}
+
+template <typename Model>
+double tilt_sensitivity(const Model& model, const brdf::Directions& d, double irradiance) {
+    return tilt_spread([&](const brdf::Directions& at) { return radiance(model, at, irradiance); }, d);
 }
 
 }  // namespace fxview::reference

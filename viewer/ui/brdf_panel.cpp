@@ -50,6 +50,7 @@ void draw_polar(const std::vector<double>& values, float incidence, bool logarit
 }  // namespace
 
 void BrdfPanel::update_plane(render::EffectSession& session) {
+    app::follow_technique(session, session.technique());
     if (plotted_effect_ == &session.effect() && plotted_values_ == session.values().numbers && plotted_incidence_ == incidence_) return;
     plotted_effect_ = &session.effect();
     plotted_values_ = session.values().numbers;
@@ -68,6 +69,7 @@ void BrdfPanel::update_plane(render::EffectSession& session) {
 }
 
 const app::BrdfCheck& BrdfPanel::check(render::EffectSession& session) {
+    app::follow_technique(session, session.technique());
     check_ = app::analyse_brdf_grid(app::evaluate_brdf_grid(session, false), app::evaluate_brdf_grid(session, true));
     checked_values_ = session.values().numbers;
     return *check_;
