@@ -659,6 +659,8 @@ TEST_CASE("brdf-check: albedo, reciprocity and energy against known answers") {
     // flagged at the incidence where it does.
     const auto wrong = brdf_check("not_reciprocal.brdf", "--set gain=3");
     CHECK(wrong["reciprocity_max_relative"].get<double>() > 0.9);
+    CHECK(wrong["reciprocal"] == false);
+    CHECK(lambert["reciprocal"] == true);
     CHECK(wrong["conserves_energy"] == false);
     CHECK(wrong["max_albedo"].get<double>() == doctest::Approx(3.0).epsilon(1e-3));
     CHECK(wrong["max_albedo_incidence_deg"].get<double>() == 1.0);

@@ -64,6 +64,7 @@ BrdfCheck analyse_brdf_grid(const image::FloatImage& forward, const image::Float
         }
     }
     check.conserves_energy = check.max_albedo <= 1.0 + BrdfCheck::kEnergyTolerance;
+    check.reciprocal = check.reciprocity <= BrdfCheck::kReciprocityTolerance;
     return check;
 }
 

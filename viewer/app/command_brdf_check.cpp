@@ -37,6 +37,8 @@ CommandRunner add_brdf_check_command(CLI::App& app) {
                                         {"conserves_energy", c.conserves_energy},
                                         {"energy_tolerance", BrdfCheck::kEnergyTolerance},
                                         {"reciprocity_max_relative", c.reciprocity},
+                                        {"reciprocal", c.reciprocal},
+                                        {"reciprocity_tolerance", BrdfCheck::kReciprocityTolerance},
                                         {"reciprocity_where_deg", {c.reciprocity_incidence, c.reciprocity_exitance, c.reciprocity_azimuth}},
                                         {"negative_samples", c.negative},
                                         {"non_finite_samples", c.non_finite},
@@ -55,6 +57,7 @@ CommandRunner add_brdf_check_command(CLI::App& app) {
         std::printf("reciprocity: largest relative |f(L,V) - f(V,L)| = %.3g", c.reciprocity);
         if (c.reciprocity > 0)
             std::printf(" (theta_i %.0f, theta_o %.1f, phi_o %.1f deg)", c.reciprocity_incidence, c.reciprocity_exitance, c.reciprocity_azimuth);
+        std::printf(": %s", c.reciprocal ? "reciprocal" : "NOT RECIPROCAL");
         std::printf("\nnegative values at %ld of %ld samples, NaN or infinite at %ld\n", c.negative, c.samples, c.non_finite);
         return 0;
     };

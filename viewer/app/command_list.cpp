@@ -85,8 +85,13 @@ CommandRunner add_list_command(CLI::App& app) {
             std::cout << "  " << p.type << " " << p.name << (p.semantic.empty() ? "" : " : " + p.semantic);
             if (p.ui.min || p.ui.max)
                 std::cout << "  range " << (p.ui.min ? parameters[i]["min"].dump() : "-") << ".." << (p.ui.max ? parameters[i]["max"].dump() : "-");
-            if (p.default_value)
-                std::cout << "  default " << (p.type == "bool" ? (parameters[i]["default"] == 0.0 ? "false" : "true") : parameters[i]["default"].dump());
+            if (p.default_value) {
+                const nlohmann::json& value = parameters[i]["default"];
+                std::cout << "  default ";
+                if (p.type == "bool") std::cout << (value == 0.0 ? "false" : "true");
+                else if (p.type == "int" && value.is_number()) std::cout << static_cast<long long>(value.get<double>());
+                else std::cout << value.dump();
+            }
             std::cout << "\n";
         }
         return 0;

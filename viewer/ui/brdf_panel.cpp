@@ -107,7 +107,8 @@ void BrdfPanel::draw(render::EffectSession* session) {
                      std::max(1.1f, *std::max_element(albedo.begin(), albedo.end())), ImVec2(ImGui::GetContentRegionAvail().x, 90));
     ImGui::Text("largest albedo %.4f at %.0f deg: %s", check_->max_albedo, check_->max_albedo_degrees,
                 check_->conserves_energy ? "energy conserving" : "reflects more than it receives");
-    ImGui::Text("reciprocity: largest relative |f(l,v) - f(v,l)| %.3g", check_->reciprocity);
+    ImGui::Text("reciprocity: largest relative |f(l,v) - f(v,l)| %.3g: %s", check_->reciprocity,
+                check_->reciprocal ? "reciprocal" : "not reciprocal");
     ImGui::Text("negative at %ld, NaN or infinite at %ld of %ld samples", check_->negative, check_->non_finite, check_->samples);
 }
 

@@ -651,7 +651,8 @@ private:
             if (!session() || !app::has_brdf_grid(*session())) throw UsageError("brdf-check: the effect has no BRDF grid (open a .brdf file)");
             const app::BrdfCheck& c = brdf_panel_.check(*session());
             std::cout << nlohmann::json{{"brdf_check", {{"max_albedo", c.max_albedo}, {"conserves_energy", c.conserves_energy},
-                                                        {"reciprocity_max_relative", c.reciprocity}, {"negative_samples", c.negative},
+                                                        {"reciprocity_max_relative", c.reciprocity}, {"reciprocal", c.reciprocal},
+                                                        {"negative_samples", c.negative},
                                                         {"non_finite_samples", c.non_finite}}}}
                              .dump()
                       << std::endl;
