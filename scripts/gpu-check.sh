@@ -23,6 +23,9 @@ for effect in spectral/wavelength spectral/thinfilm spectral/cd brdf/analytic br
 done
 # Issue #14: the Fourier films' speed-up over the 1 nm loop, measured in one run.
 "$fxview" bench effects/spectral/thinfilm.fx --techniques FresnelExact,FresnelFourier,Bubble,BubbleFourier --frames 10 | tee "$out/bench-fourier.md"
+# Issue #15: the BRDF grid on the NVIDIA driver (brdf-check figures, the grid against its CPU reference).
+"$fxview" brdf-check tests/effects/brdf/ggx_single_scattering.brdf --set alpha=1 --json | tee "$out/brdf-check-ggx.json" || true
+"$fxview" compare effects/brdf/analytic.fx --technique BrdfGrid --size 256x256 --json | tee "$out/compare-brdf-grid.jsonl" || true
 # The sweeps of every effect (issue #10) and the film-fit round trip on the NVIDIA driver's GLSL.
 for effect in debug examples/textured brdf/analytic brdf/measured spectral/wavelength spectral/cd spectral/thinfilm; do
   "$fxview" compare "effects/$effect.fx" --sweep --sweep-random 1 --size 24x24 | tail -3 | tee "$out/sweep-$(basename "$effect").txt" || true
