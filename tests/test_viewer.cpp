@@ -320,6 +320,17 @@ TEST_CASE("the BRDF tab plots a .brdf file and its check runs by script; an effe
     // Lambert's albedo is its largest reflectance, 0.8 (as brdf-check on the command line).
     CHECK(check["max_albedo"].get<double>() == doctest::Approx(0.8).epsilon(1e-4));
     CHECK(check["conserves_energy"] == true);
+    // A measured table overlaid on the polar plot (a synthetic Lambertian MERL file); a missing file is named.
+    const std::string merl = temp_path("tab-lambert.binary");
+    REQUIRE(run("brdf-grid --model phong --param ks=0 --param kd=0.5,0.5,0.5 --merl-out --out " + merl).exit_code == 0);
+    std::ofstream(script) << "brdf-measured " << merl << "\nframes 2\n";
+    const Result measured = run("view " + lambert + " --render-size 32x32 --script " + script + " --frames 2");
+    CHECK(measured.exit_code == 0);
+    CHECK(measured.out.find("\"brdf_measured\"") != std::string::npos);
+    std::ofstream(script) << "brdf-measured /no/such/file.binary\n";
+    const Result missing = run("view " + lambert + " --render-size 32x32 --script " + script + " --frames 2");
+    CHECK(missing.exit_code != 0);
+    CHECK(missing.err.find("/no/such/file.binary") != std::string::npos);
     std::ofstream(script) << "brdf-check\n";
     const Result refused = run("view " + std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/debug.fx --render-size 32x32 --script " + script + " --frames 2");
     CHECK(refused.exit_code != 0);

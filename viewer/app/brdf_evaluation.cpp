@@ -1,6 +1,8 @@
 #include "app/brdf_evaluation.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 #include "app/brdf_check.hpp"
 #include "core/error.hpp"
@@ -82,6 +84,17 @@ image::FloatImage evaluate_brdf_slice(render::EffectSession& session, double phi
 
 image::FloatImage evaluate_brdf_hemisphere(render::EffectSession& session, double incidence_degrees, int width, int height) {
     return render_grid(session, width, height, "3", false, incidence_degrees);
+}
+
+std::vector<std::array<double, 3>> measured_plane(const fit::MerlBrdf& merl, double incidence_degrees, int samples) {
+    const double ti = incidence_degrees * std::numbers::pi / 180.0;
+    const glm::dvec3 l(std::sin(ti), 0.0, std::cos(ti));
+    std::vector<std::array<double, 3>> values;
+    for (int k = 0; k < samples; ++k) {
+        const double to = (-90.0 + 180.0 * (k + 0.5) / samples) * std::numbers::pi / 180.0;
+        values.push_back(merl.lookup(l, glm::dvec3(std::sin(to), 0.0, std::cos(to))));
+    }
+    return values;
 }
 
 image::FloatImage BrdfEvaluation::grid(bool swapped) { return evaluate_brdf_grid(*session_, swapped); }

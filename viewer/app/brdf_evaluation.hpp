@@ -3,10 +3,13 @@
 // incidence for brdf-plot. Owns a headless GL context and the effect's session.
 #pragma once
 #include <memory>
+#include <array>
 #include <string>
+#include <vector>
 
 #include "app/effect_options.hpp"
 #include "context/context.hpp"
+#include "fit/merl.hpp"
 #include "image/image.hpp"
 #include "render/effect_session.hpp"
 
@@ -27,6 +30,9 @@ image::FloatImage evaluate_brdf_slice(render::EffectSession& session, double phi
 // The hemisphere for incidence θi: φo = 360° (a + ½) / width across, θo = 90° (b + ½) / height up from
 // the bottom row.
 image::FloatImage evaluate_brdf_hemisphere(render::EffectSession& session, double incidence_degrees, int width, int height);
+
+// A measured (MERL) BRDF at the directions of evaluate_brdf_plane, RGB, looked up on the CPU.
+std::vector<std::array<double, 3>> measured_plane(const fit::MerlBrdf& merl, double incidence_degrees, int samples);
 
 class BrdfEvaluation {
 public:

@@ -155,14 +155,8 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
             BrdfSeries s{std::filesystem::path(file).stem().string() + " (measured)", {}};
             std::vector<std::array<double, 3>> values;
             if (o->view == "polar") {
-                const double ti = o->incidence * std::numbers::pi / 180.0;
-                const glm::dvec3 l(std::sin(ti), 0.0, std::cos(ti));
-                for (int k = 0; k < kPlaneSamples; ++k) {
-                    const double to = (-90.0 + 180.0 * (k + 0.5) / kPlaneSamples) * std::numbers::pi / 180.0;
-                    const std::array<double, 3> f = merl.lookup(l, glm::dvec3(std::sin(to), 0.0, std::cos(to)));
-                    s.values.push_back((f[0] + f[1] + f[2]) / 3.0);
-                    values.push_back(f);
-                }
+                values = measured_plane(merl, o->incidence, kPlaneSamples);
+                for (const auto& f : values) s.values.push_back((f[0] + f[1] + f[2]) / 3.0);
             } else {
                 add_albedo(analyse_brdf_grid(tabulate_on_grid(merl, false), tabulate_on_grid(merl, true)), s, values);
             }

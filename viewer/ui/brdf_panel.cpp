@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <numbers>
 
@@ -15,15 +16,16 @@ constexpr int kPlaneSamples = 361;  // every half degree
 
 // The polar plot into the next `height` pixels of the window: radius ∝ f (or its logarithm over four
 // decades), the mirror side on the left, the light's direction drawn in yellow.
-void draw_polar(const std::vector<double>& values, float incidence, bool logarithmic, float height) {
+void draw_polar(const std::vector<double>& values, const std::vector<double>& measured, float incidence, bool logarithmic, float height) {
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const float width = ImGui::GetContentRegionAvail().x;
     ImGui::Dummy(ImVec2(width, height));
     ImDrawList* list = ImGui::GetWindowDrawList();
     const float cx = origin.x + width * 0.5f, cy = origin.y + height - 6.0f, radius = std::max(10.0f, std::min(width * 0.5f - 6.0f, height - 12.0f));
     double peak = 0;
-    for (const double v : values)
-        if (std::isfinite(v)) peak = std::max(peak, v);
+    for (const auto* series : {&values, &measured})
+        for (const double v : *series)
+            if (std::isfinite(v)) peak = std::max(peak, v);
     const double top = logarithmic ? std::ceil(std::log10(std::max(peak, 1e-30))) : (peak > 0 ? peak : 1.0);
     const auto to_radius = [&](double f) {
         const double t = logarithmic ? (f > 0 ? (std::log10(f) - (top - 4.0)) / 4.0 : 0.0) : f / top;
@@ -40,11 +42,14 @@ void draw_polar(const std::vector<double>& values, float incidence, bool logarit
     }
     for (int degrees = -90; degrees <= 90; degrees += 30) list->AddLine(ImVec2(cx, cy), point(degrees, radius), grid);
     list->AddLine(ImVec2(cx, cy), point(incidence, radius), light, 2.0f);
-    for (size_t k = 0; k + 1 < values.size(); ++k) {
-        if (!std::isfinite(values[k]) || !std::isfinite(values[k + 1])) continue;
-        const double d0 = -90.0 + 180.0 * (k + 0.5) / values.size(), d1 = -90.0 + 180.0 * (k + 1.5) / values.size();
-        list->AddLine(point(d0, to_radius(values[k])), point(d1, to_radius(values[k + 1])), curve, 2.0f);
-    }
+    const ImU32 measured_curve = IM_COL32(255, 140, 40, 255);
+    for (const auto& [series, colour] : {std::pair{&values, curve}, std::pair{&measured, measured_curve}})
+        for (size_t k = 0; k + 1 < series->size(); ++k) {
+            const std::vector<double>& v = *series;
+            if (!std::isfinite(v[k]) || !std::isfinite(v[k + 1])) continue;
+            const double d0 = -90.0 + 180.0 * (k + 0.5) / v.size(), d1 = -90.0 + 180.0 * (k + 1.5) / v.size();
+            list->AddLine(point(d0, to_radius(v[k])), point(d1, to_radius(v[k + 1])), colour, 2.0f);
+        }
 }
 
 }  // namespace
@@ -66,6 +71,13 @@ void BrdfPanel::update_plane(render::EffectSession& session) {
     } catch (const std::exception& e) {
         error_ = e.what();
     }
+}
+
+void BrdfPanel::load_measured(const std::string& path) {
+    measured_ = fit::read_merl(path);
+    measured_name_ = path;
+    measured_incidence_ = -1.0f;  // recomputed at the next draw
+    std::snprintf(measured_path_, sizeof measured_path_, "%s", path.c_str());
 }
 
 const app::BrdfCheck& BrdfPanel::check(render::EffectSession& session) {
@@ -91,7 +103,25 @@ void BrdfPanel::draw(render::EffectSession* session) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
     ImGui::TextWrapped("f(l, v) in the plane of incidence (mean of R, G, B); mirror side left, light in yellow");
     ImGui::PopStyleColor();
-    draw_polar(plane_, incidence_, logarithmic_, std::min(ImGui::GetContentRegionAvail().x * 0.55f, 320.0f));
+    if (measured_ && measured_incidence_ != incidence_) {
+        measured_plane_.clear();
+        for (const auto& f : app::measured_plane(*measured_, incidence_, kPlaneSamples)) measured_plane_.push_back((f[0] + f[1] + f[2]) / 3.0);
+        measured_incidence_ = incidence_;
+    }
+    draw_polar(plane_, measured_ ? measured_plane_ : std::vector<double>{}, incidence_, logarithmic_,
+               std::min(ImGui::GetContentRegionAvail().x * 0.55f, 320.0f));
+    ImGui::InputTextWithHint("##measured", "MERL .binary file to compare", measured_path_, sizeof measured_path_);
+    ImGui::SameLine();
+    if (ImGui::Button("Load measured")) {
+        try {
+            load_measured(measured_path_);
+            measured_error_.clear();
+        } catch (const std::exception& e) {
+            measured_error_ = e.what();  // the last good measurement stays
+        }
+    }
+    if (!measured_error_.empty()) ImGui::TextWrapped("%s", measured_error_.c_str());
+    if (measured_) ImGui::TextWrapped("measured (orange): %s", measured_name_.c_str());
     if (ImGui::Button("Check energy and reciprocity")) {
         try {
             check(*session);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/brdf_check.hpp"
+#include "fit/merl.hpp"
 #include "render/effect_session.hpp"
 
 namespace fxview::ui {
@@ -18,6 +19,9 @@ public:
     void draw(render::EffectSession* session);
     // The checks at the current parameter values (the Check button; the script verb brdf-check).
     const app::BrdfCheck& check(render::EffectSession& session);
+    // A MERL file to overlay on the polar plot (the Measured field; the script verb brdf-measured).
+    // Throws Error naming the file when it cannot be read.
+    void load_measured(const std::string& path);
 
 private:
     void update_plane(render::EffectSession& session);
@@ -31,6 +35,11 @@ private:
     std::optional<app::BrdfCheck> check_;
     std::map<std::string, std::vector<double>> checked_values_;
     std::string error_;
+    std::optional<fit::MerlBrdf> measured_;
+    std::string measured_name_, measured_error_;
+    std::vector<double> measured_plane_;
+    float measured_incidence_ = -1.0f;
+    char measured_path_[1024] = "";
 };
 
 }  // namespace fxview::ui

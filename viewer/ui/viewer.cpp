@@ -658,6 +658,11 @@ private:
                       << std::endl;
             requested_tab_ = "BRDF";
             wait_frames_ = 1;
+        } else if (a.verb == "brdf-measured") {  // as the BRDF tab's Load measured
+            brdf_panel_.load_measured(args[0]);
+            std::cout << nlohmann::json{{"brdf_measured", args[0]}}.dump() << std::endl;
+            requested_tab_ = "BRDF";
+            wait_frames_ = 1;
         } else if (a.verb == "inspect-texture") {
             if (!session() || !session()->resources().find(args[0])) throw UsageError("inspect-texture: the effect has no texture '" + args[0] + "'");
             const char* channels[] = {"rgba", "r", "g", "b", "a"};
