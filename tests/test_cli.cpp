@@ -577,6 +577,10 @@ TEST_CASE("malformed .brdf files exit 1 naming the .brdf's file and line") {
         {"not_analytic.brdf", "not_analytic.brdf:1: a .brdf file fxview can render starts with 'analytic'"},
         {"unknown_type.brdf", "unknown_type.brdf:3: unknown parameter type 'vec2'"},
         {"unterminated_shader.brdf", "unterminated_shader.brdf:5: '::begin shader' without '::end shader'"}};
+    // The BRDF is compiled into three techniques; each compiler message is reported once, naming them.
+    const Result shared = run("check " + std::string(FXVIEW_TEST_EFFECTS) + "/brdf/malformed/broken_shader.brdf");
+    CHECK(std::count(shared.out.begin(), shared.out.end(), '\n') == 3);
+    CHECK(shared.out.find("broken_shader.brdf:10: error: `undefined_name' undeclared [techniques Lit, BrdfValue, BrdfGrid]") != std::string::npos);
     for (const auto& [file, message] : expected) {
         const std::string path = std::string(FXVIEW_TEST_EFFECTS) + "/brdf/malformed/" + file;
         CAPTURE(path);

@@ -26,14 +26,16 @@ int check_effect(const std::string& path, const effect::LoadOptions& load_option
     try {
         const effect::Effect effect = effect::load_effect(path, load_options);
         int broken = 0;
+        std::string compile_errors;  // every technique's, folded where they repeat (shared code)
         for (const auto& technique : effect.techniques) {
             try {
                 effect::compile_technique(effect, technique);
             } catch (const effect::EffectError& error) {
-                print_error(error.what());
+                compile_errors += std::string(error.what()) + "\n";
                 ++broken;
             }
         }
+        if (!compile_errors.empty()) print_error(effect::fold_repeated_messages(compile_errors));
         try {  // textures: every file found, readable, allowed and of the declared shape
             render::EffectResources resources(effect, effect::default_values(effect), texture_folders());
         } catch (const effect::EffectError& error) {

@@ -1,7 +1,9 @@
 #include "effect/effect_program.hpp"
 
 #include <algorithm>
+#include <map>
 #include <sstream>
+#include <vector>
 
 #include "effect/parser.hpp"
 #include "gl/program.hpp"
@@ -31,6 +33,41 @@ std::string assemble_stage(const Effect& effect, const Pass& pass, ShaderStage s
     source += effect.globals;
     source += effect.find_shader(pass.shaders.at(stage))->code;
     return source;
+}
+
+std::string fold_repeated_messages(const std::string& lines) {
+    const std::string marker = " [technique ";
+    std::vector<std::string> order;                            // the messages, first seen first
+    std::map<std::string, std::vector<std::string>> contexts;  // message -> the contexts it came with
+    std::istringstream in(lines);
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty()) continue;
+        const size_t at = line.rfind(marker);
+        const std::string message = at == std::string::npos ? line : line.substr(0, at);
+        const std::string context = at == std::string::npos ? "" : line.substr(at);
+        auto& seen = contexts[message];
+        if (seen.empty()) order.push_back(message);
+        if (std::find(seen.begin(), seen.end(), context) == seen.end()) seen.push_back(context);
+    }
+    std::string out;
+    for (const auto& message : order) {
+        const auto& seen = contexts[message];
+        if (seen.size() == 1) {
+            out += message + seen.front() + "\n";
+            continue;
+        }
+        // The technique names of the contexts, each once.
+        std::vector<std::string> names;
+        for (const auto& context : seen) {
+            const size_t begin = marker.size(), end = context.find(',', begin);
+            const std::string name = context.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+            if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+        }
+        std::string list;
+        for (const auto& name : names) list += (list.empty() ? "" : ", ") + name;
+        out += message + (names.size() == 1 ? " [technique " : " [techniques ") + list + "]\n";
+    }
+    return out;
 }
 
 CompiledTechnique compile_technique(const Effect& effect, const Technique& technique) {

@@ -37,6 +37,11 @@ std::string assemble_stage(const Effect& effect, const Pass& pass, ShaderStage s
 // Throws EffectError whose message holds every compiler message mapped to `file:line`.
 CompiledTechnique compile_technique(const Effect& effect, const Technique& technique);
 
+// Compiler messages of several techniques ("file:line: message [technique T, pass P, ...]" a line)
+// with repeats folded: code shared by techniques (top-level GLSL, a .brdf file's BRDF()) fails the
+// same way in each, and is reported once as "file:line: message [techniques A, B, C]".
+std::string fold_repeated_messages(const std::string& lines);
+
 // Sets every non-sampler uniform of the pass: semantics from `frame`, the rest from `values`.
 // (Samplers have fixed units; the renderer binds their textures.)
 void bind_uniforms(const CompiledPass& pass, const ParameterValues& values, const FrameContext& frame);

@@ -34,7 +34,7 @@ std::unique_ptr<EffectSession::Loaded> EffectSession::prepare(std::unique_ptr<ef
             if (!first) first = error.location;
         }
     }
-    if (first) throw effect::EffectError(*first, failures, effect::EffectError::Lines{});
+    if (first) throw effect::EffectError(*first, effect::fold_repeated_messages(failures), effect::EffectError::Lines{});
     for (const auto& [name, compiled] : loaded->techniques) {
         TechniqueTraits& t = loaded->traits[name];
         for (const auto& pass : compiled.passes) {
