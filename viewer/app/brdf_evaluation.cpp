@@ -12,7 +12,7 @@
 
 namespace fxview::app {
 
-BrdfEvaluation::BrdfEvaluation(const EffectOptions& effect, const std::string& backend) : path_(effect.path) {
+BrdfEvaluation::BrdfEvaluation(const EffectOptions& effect, const std::string& backend) {
     context::ContextOptions options;
     options.backend = context::parse_backend(backend);
     options.window_width = kGridWidth;
@@ -95,12 +95,6 @@ std::vector<std::array<double, 3>> measured_plane(const fit::MerlBrdf& merl, dou
         values.push_back(merl.lookup(l, glm::dvec3(std::sin(to), 0.0, std::cos(to))));
     }
     return values;
-}
-
-image::FloatImage BrdfEvaluation::grid(bool swapped) { return evaluate_brdf_grid(*session_, swapped); }
-
-image::FloatImage BrdfEvaluation::plane(double incidence_degrees, int samples, bool swapped) {
-    return evaluate_brdf_plane(*session_, incidence_degrees, samples, swapped);
 }
 
 }  // namespace fxview::app

@@ -22,7 +22,10 @@ bool has_brdf_grid(const render::EffectSession& session);
 // An effect whose BRDF() serves several models chooses one by a combo parameter BrdfModel listing
 // them by technique name (effects/brdf/analytic.fx): set it to `technique` where it lists it.
 void follow_technique(render::EffectSession& session, const std::string& technique);
+// f(L, V) (or f(V, L)) over the tiles of app/brdf_check.hpp, rows from the top.
 image::FloatImage evaluate_brdf_grid(render::EffectSession& session, bool swapped);
+// f(L, V) at `samples` outgoing directions across the plane of incidence, θo from -90° (mirror side)
+// to 90°, sample k at θo = -90 + 180 (k + ½) / samples, for incidence θi in degrees.
 image::FloatImage evaluate_brdf_plane(render::EffectSession& session, double incidence_degrees, int samples, bool swapped = false);
 // Rusinkiewicz's slice at difference azimuth φd: θh from 0 to 90° across, θd from 0 to 90° down the
 // rows from the bottom (image rows from the top: θd decreasing), pixel centres; 0 below the surface.
@@ -39,17 +42,12 @@ public:
     // Throws UsageError when the effect has no BrdfGrid technique.
     BrdfEvaluation(const EffectOptions& effect, const std::string& backend);
     ~BrdfEvaluation();
-    // f(L, V) (or f(V, L)) over the tiles of app/brdf_check.hpp, rows from the top.
-    image::FloatImage grid(bool swapped);
-    // f(L, V) at `samples` outgoing directions across the plane of incidence, θo from -90° (mirror
-    // side) to 90°, sample k at θo = -90 + 180 (k + ½) / samples, for incidence θi in degrees.
-    image::FloatImage plane(double incidence_degrees, int samples, bool swapped = false);
+    // The session to pass to the evaluate_brdf_* functions.
     render::EffectSession& session() { return *session_; }
 
 private:
     std::unique_ptr<context::Context> context_;
     std::unique_ptr<render::EffectSession> session_;
-    std::string path_;
 };
 
 }  // namespace fxview::app

@@ -25,7 +25,7 @@ CommandRunner add_brdf_check_command(CLI::App& app) {
     command->add_flag("--json", o->json, "Print one JSON object");
     return [o] {
         BrdfEvaluation evaluation(o->effect, o->backend);
-        const image::FloatImage forward = evaluation.grid(false), swapped = evaluation.grid(true);
+        const image::FloatImage forward = evaluate_brdf_grid(evaluation.session(), false), swapped = evaluate_brdf_grid(evaluation.session(), true);
         const BrdfCheck c = analyse_brdf_grid(forward, swapped);
         if (o->json) {
             nlohmann::json albedo = nlohmann::json::array();

@@ -1,4 +1,4 @@
-// `fxview brdf-plot FILE... --view polar|albedo|sphere --out P.png [--csv F.csv]`: BRDF Explorer's
+// `fxview brdf-plot FILE... --view polar|albedo|lobe|slice|sphere --out P.png [--csv F.csv]`: BRDF Explorer's
 // views, headless. Values come from the GPU (app/brdf_evaluation.hpp), so any .brdf file works.
 #include <algorithm>
 #include <cmath>
@@ -22,7 +22,7 @@
 namespace fxview::app {
 namespace {
 
-constexpr int kPlaneSamples = 721;  // every quarter degree across the plane of incidence
+constexpr int kPlaneSamples = 721;  // 180°/721 apart across the plane of incidence
 
 double mean_rgb(const float* p) { return (static_cast<double>(p[0]) + p[1] + p[2]) / 3.0; }
 
@@ -137,14 +137,14 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
             BrdfSeries s{std::filesystem::path(file).stem().string(), {}};
             std::vector<std::array<double, 3>> values;
             if (o->view == "polar") {
-                const image::FloatImage plane = evaluation.plane(o->incidence, kPlaneSamples);
+                const image::FloatImage plane = evaluate_brdf_plane(evaluation.session(), o->incidence, kPlaneSamples);
                 for (int k = 0; k < kPlaneSamples; ++k) {
                     const float* p = plane.pixel(k, 0);
                     s.values.push_back(mean_rgb(p));
                     values.push_back({p[0], p[1], p[2]});
                 }
             } else {
-                add_albedo(analyse_brdf_grid(evaluation.grid(false), evaluation.grid(true)), s, values);
+                add_albedo(analyse_brdf_grid(evaluate_brdf_grid(evaluation.session(), false), evaluate_brdf_grid(evaluation.session(), true)), s, values);
             }
             series.push_back(std::move(s));
             rgb.push_back(std::move(values));

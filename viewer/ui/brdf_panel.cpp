@@ -55,7 +55,12 @@ void draw_polar(const std::vector<double>& values, const std::vector<double>& me
 }  // namespace
 
 void BrdfPanel::update_plane(render::EffectSession& session) {
-    app::follow_technique(session, session.technique());
+    // The model follows the technique on screen: set when either changes, not every frame.
+    if (followed_effect_ != &session.effect() || followed_technique_ != session.technique()) {
+        app::follow_technique(session, session.technique());
+        followed_effect_ = &session.effect();
+        followed_technique_ = session.technique();
+    }
     if (plotted_effect_ == &session.effect() && plotted_values_ == session.values().numbers && plotted_incidence_ == incidence_) return;
     plotted_effect_ = &session.effect();
     plotted_values_ = session.values().numbers;

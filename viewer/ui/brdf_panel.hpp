@@ -30,6 +30,8 @@ private:
     bool logarithmic_ = false;
     std::vector<double> plane_;  // mean of R, G, B across the plane of incidence
     const void* plotted_effect_ = nullptr;
+    const void* followed_effect_ = nullptr;
+    std::string followed_technique_;
     std::map<std::string, std::vector<double>> plotted_values_;
     float plotted_incidence_ = -1.0f;
     std::optional<app::BrdfCheck> check_;
