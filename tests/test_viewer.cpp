@@ -320,6 +320,14 @@ TEST_CASE("the BRDF tab plots a .brdf file and its check runs by script; an effe
     // Lambert's albedo is its largest reflectance, 0.8 (as brdf-check on the command line).
     CHECK(check["max_albedo"].get<double>() == doctest::Approx(0.8).epsilon(1e-4));
     CHECK(check["conserves_energy"] == true);
+    // Every view draws, and kept curves accumulate across parameter changes for the overlay.
+    std::ofstream(script) << "brdf-view lobe\nbrdf-view slice\nbrdf-view sphere\nbrdf-view polar\nbrdf-keep\nset reflectance 0.3,0.3,0.3\nbrdf-keep\nframes 2\n";
+    const Result views = run("view " + lambert + " --render-size 32x32 --script " + script + " --frames 2");
+    CAPTURE(views.err);
+    CHECK(views.exit_code == 0);
+    for (const char* view : {"lobe", "slice", "sphere", "polar"}) CHECK(views.out.find("\"brdf_view\":\"" + std::string(view) + "\"") != std::string::npos);
+    CHECK(views.out.find("white: f = 0.159") != std::string::npos);  // the slice of this Lambert: green 0.5 / pi everywhere
+    CHECK(views.out.find("{\"brdf_kept_curves\":2}") != std::string::npos);
     // A measured table overlaid on the polar plot (a synthetic Lambertian MERL file); a missing file is named.
     const std::string merl = temp_path("tab-lambert.binary");
     REQUIRE(run("brdf-grid --model phong --param ks=0 --param kd=0.5,0.5,0.5 --merl-out --out " + merl).exit_code == 0);

@@ -86,6 +86,12 @@ image::FloatImage evaluate_brdf_hemisphere(render::EffectSession& session, doubl
     return render_grid(session, width, height, "3", false, incidence_degrees);
 }
 
+image::FloatImage render_lit_sphere(render::EffectSession& session, int size) {
+    gl::RenderTarget target({size, size, 1, 4});
+    session.render(scene::Scene{}, target);
+    return target.read_color(0);
+}
+
 std::vector<std::array<double, 3>> measured_plane(const fit::MerlBrdf& merl, double incidence_degrees, int samples) {
     const double ti = incidence_degrees * std::numbers::pi / 180.0;
     const glm::dvec3 l(std::sin(ti), 0.0, std::cos(ti));

@@ -34,6 +34,9 @@ image::FloatImage evaluate_brdf_slice(render::EffectSession& session, double phi
 // the bottom row.
 image::FloatImage evaluate_brdf_hemisphere(render::EffectSession& session, double incidence_degrees, int width, int height);
 
+// The session's current technique on a sphere, `size` pixels square, 4x MSAA, in the default scene.
+image::FloatImage render_lit_sphere(render::EffectSession& session, int size);
+
 // A measured (MERL) BRDF at the directions of evaluate_brdf_plane, RGB, looked up on the CPU.
 std::vector<std::array<double, 3>> measured_plane(const fit::MerlBrdf& merl, double incidence_degrees, int samples);
 

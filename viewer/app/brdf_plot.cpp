@@ -179,4 +179,20 @@ image::FloatImage lobe_chart(const image::FloatImage& hemisphere, const std::str
     return canvas.take();
 }
 
+float scale_slice_for_display(image::FloatImage& slice) {
+    std::vector<float> values;
+    for (int y = 0; y < slice.height; ++y)
+        for (int x = 0; x < slice.width; ++x)
+            if (std::isfinite(slice.pixel(x, y)[1])) values.push_back(slice.pixel(x, y)[1]);
+    if (values.empty()) return 0.0f;
+    const auto percentile = values.begin() + static_cast<std::ptrdiff_t>(values.size() * 99 / 100);
+    std::nth_element(values.begin(), percentile, values.end());
+    const float white = *percentile;
+    if (!(white > 0)) return 0.0f;
+    for (int y = 0; y < slice.height; ++y)
+        for (int x = 0; x < slice.width; ++x)
+            for (int c = 0; c < 3; ++c) slice.pixel(x, y)[c] /= white;
+    return white;
+}
+
 }  // namespace fxview::app

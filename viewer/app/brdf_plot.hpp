@@ -27,4 +27,8 @@ image::FloatImage albedo_chart(const std::vector<BrdfSeries>& series, const std:
 // `hemisphere` as evaluate_brdf_hemisphere lays it out (φo across, θo up from the bottom row).
 image::FloatImage lobe_chart(const image::FloatImage& hemisphere, const std::string& name, double incidence_degrees, ChartSize size);
 
+// Rusinkiewicz's slice (evaluate_brdf_slice) scaled for an 8-bit image: the 99th percentile of the
+// green channel becomes white; returns that value (0 when the slice is black, left unscaled).
+float scale_slice_for_display(image::FloatImage& slice);
+
 }  // namespace fxview::app

@@ -102,16 +102,8 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
             } else {
                 // The values themselves in EXR/PFM; in PNG scaled so that the 99th percentile is white.
                 image::FloatImage slice = evaluate_brdf_slice(evaluation.session(), o->phi_d, size.x, size.y);
-                std::vector<float> values;
-                for (int y = 0; y < slice.height; ++y)
-                    for (int x = 0; x < slice.width; ++x) values.push_back(slice.pixel(x, y)[1]);
-                std::nth_element(values.begin(), values.begin() + values.size() * 99 / 100, values.end());
-                const float white = values[values.size() * 99 / 100];
                 const bool png = std::filesystem::path(o->out).extension() == ".png";
-                if (png && white > 0)
-                    for (int y = 0; y < slice.height; ++y)
-                        for (int x = 0; x < slice.width; ++x)
-                            for (int c = 0; c < 3; ++c) slice.pixel(x, y)[c] /= white;
+                const float white = png ? scale_slice_for_display(slice) : 0.0f;
                 image::write_image(o->out, slice);
                 if (png) std::printf("slice at phi_d = %g deg: theta_h 0-90 deg across, theta_d 90 (top) to 0 deg; white = f of %g\n", o->phi_d, white);
             }

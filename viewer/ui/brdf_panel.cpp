@@ -5,26 +5,34 @@
 #include <algorithm>
 #include <cstdio>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
 #include "app/brdf_evaluation.hpp"
+#include "app/brdf_plot.hpp"
+#include "core/error.hpp"
 
 namespace fxview::ui {
 namespace {
 
 constexpr int kPlaneSamples = 361;  // every half degree
 
+struct Curve {
+    const std::vector<double>* values;
+    ImU32 colour;
+};
+
 // The polar plot into the next `height` pixels of the window: radius ∝ f (or its logarithm over four
 // decades), the mirror side on the left, the light's direction drawn in yellow.
-void draw_polar(const std::vector<double>& values, const std::vector<double>& measured, float incidence, bool logarithmic, float height) {
+void draw_polar(const std::vector<Curve>& curves, float incidence, bool logarithmic, float height) {
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const float width = ImGui::GetContentRegionAvail().x;
     ImGui::Dummy(ImVec2(width, height));
     ImDrawList* list = ImGui::GetWindowDrawList();
     const float cx = origin.x + width * 0.5f, cy = origin.y + height - 6.0f, radius = std::max(10.0f, std::min(width * 0.5f - 6.0f, height - 12.0f));
     double peak = 0;
-    for (const auto* series : {&values, &measured})
-        for (const double v : *series)
+    for (const Curve& curve : curves)
+        for (const double v : *curve.values)
             if (std::isfinite(v)) peak = std::max(peak, v);
     const double top = logarithmic ? std::ceil(std::log10(std::max(peak, 1e-30))) : (peak > 0 ? peak : 1.0);
     const auto to_radius = [&](double f) {
@@ -35,22 +43,32 @@ void draw_polar(const std::vector<double>& values, const std::vector<double>& me
         const double a = degrees * std::numbers::pi / 180.0;
         return ImVec2(cx + r * static_cast<float>(std::sin(a)), cy - r * static_cast<float>(std::cos(a)));
     };
-    const ImU32 grid = IM_COL32(90, 90, 90, 255), curve = IM_COL32(80, 170, 255, 255), light = IM_COL32(240, 190, 40, 255);
+    const ImU32 grid = IM_COL32(90, 90, 90, 255), light = IM_COL32(240, 190, 40, 255);
     for (int ring = 1; ring <= 4; ++ring) {
         const float r = radius * ring / 4.0f;
         for (int k = 0; k < 60; ++k) list->AddLine(point(-90.0 + 3.0 * k, r), point(-87.0 + 3.0 * k, r), grid);
     }
     for (int degrees = -90; degrees <= 90; degrees += 30) list->AddLine(ImVec2(cx, cy), point(degrees, radius), grid);
     list->AddLine(ImVec2(cx, cy), point(incidence, radius), light, 2.0f);
-    const ImU32 measured_curve = IM_COL32(255, 140, 40, 255);
-    for (const auto& [series, colour] : {std::pair{&values, curve}, std::pair{&measured, measured_curve}})
-        for (size_t k = 0; k + 1 < series->size(); ++k) {
-            const std::vector<double>& v = *series;
+    for (const Curve& curve : curves)
+        for (size_t k = 0; k + 1 < curve.values->size(); ++k) {
+            const std::vector<double>& v = *curve.values;
             if (!std::isfinite(v[k]) || !std::isfinite(v[k + 1])) continue;
             const double d0 = -90.0 + 180.0 * (k + 0.5) / v.size(), d1 = -90.0 + 180.0 * (k + 1.5) / v.size();
-            list->AddLine(point(d0, to_radius(v[k])), point(d1, to_radius(v[k + 1])), colour, 2.0f);
+            list->AddLine(point(d0, to_radius(v[k])), point(d1, to_radius(v[k + 1])), curve.colour, 2.0f);
         }
 }
+
+// Colours of kept curves after the live one (blue) and the measured one (orange).
+ImU32 kept_colour(size_t index) {
+    static constexpr ImU32 colours[] = {IM_COL32(90, 200, 110, 255), IM_COL32(220, 90, 200, 255), IM_COL32(230, 80, 80, 255),
+                                        IM_COL32(170, 170, 170, 255), IM_COL32(120, 220, 230, 255), IM_COL32(200, 200, 80, 255)};
+    return colours[index % std::size(colours)];
+}
+
+ImVec4 to_vec4(ImU32 colour) { return ImGui::ColorConvertU32ToFloat4(colour); }
+
+constexpr ImU32 kLiveColour = IM_COL32(80, 170, 255, 255), kMeasuredColour = IM_COL32(255, 140, 40, 255);
 
 }  // namespace
 
@@ -78,6 +96,62 @@ void BrdfPanel::update_plane(render::EffectSession& session) {
     }
 }
 
+void BrdfPanel::keep_curve(render::EffectSession& session) {
+    update_plane(session);
+    char label[64];
+    std::snprintf(label, sizeof label, ", %s, theta_i %.0f deg", session.technique().c_str(), incidence_);
+    kept_.push_back({std::filesystem::path(session.effect().path).filename().string() + label, plane_});
+}
+
+// The lobe, slice or sphere for the current values, redrawn when the view, a value or an angle changes.
+void BrdfPanel::update_picture(render::EffectSession& session) {
+    if (picture_.empty() || pictured_view_ != view_ || picture_values_ != session.values().numbers || picture_effect_ != &session.effect() ||
+        picture_incidence_ != incidence_ || picture_phi_d_ != phi_d_ || picture_technique_ != session.technique() || picture_log_ != logarithmic_) {
+        pictured_view_ = view_;
+        picture_values_ = session.values().numbers;
+        picture_effect_ = &session.effect();
+        picture_incidence_ = incidence_;
+        picture_phi_d_ = phi_d_;
+        picture_technique_ = session.technique();
+        picture_log_ = logarithmic_;
+    } else {
+        return;
+    }
+    try {
+        const std::string name = std::filesystem::path(session.effect().path).stem().string();
+        if (view_ == View::Lobe) {
+            const image::FloatImage hemisphere = app::evaluate_brdf_hemisphere(session, incidence_, 96, 40);
+            picture_ = upload_ui_image(app::lobe_chart(hemisphere, name, incidence_, {640, 480}));
+            picture_caption_ = "f(l, v) over the hemisphere for the light in yellow, seen from above and aside";
+        } else if (view_ == View::Slice) {
+            image::FloatImage slice = app::evaluate_brdf_slice(session, phi_d_, 128, 128);
+            const float white = app::scale_slice_for_display(slice);
+            if (logarithmic_)  // four decades below white
+                for (float& v : slice.data) v = v > 0 ? std::clamp((std::log10(v) + 4.0f) / 4.0f, 0.0f, 1.0f) : 0.0f;
+            picture_ = upload_ui_image(slice, true);
+            char caption[200];
+            std::snprintf(caption, sizeof caption, "theta_h 0-90 deg across, theta_d 90 (top) to 0 deg, phi_d %.0f deg; white: f = %.3g%s", phi_d_, white,
+                          logarithmic_ ? ", black: 1e-4 of it" : "");
+            picture_caption_ = caption;
+        } else {
+            const image::FloatImage sphere = app::render_lit_sphere(session, 256);
+            picture_ = upload_ui_image(sphere);
+            picture_caption_ = "technique " + session.technique() + " on a sphere, lit by the scene's default light";
+        }
+        error_.clear();
+    } catch (const std::exception& e) {
+        error_ = e.what();
+    }
+}
+
+std::string BrdfPanel::show(View view, render::EffectSession& session) {
+    view_ = view;
+    update_plane(session);
+    if (view_ != View::Polar) update_picture(session);
+    if (!error_.empty()) throw Error(error_);
+    return view_ == View::Polar ? "polar plot of the plane of incidence" : picture_caption_;
+}
+
 void BrdfPanel::load_measured(const std::string& path) {
     measured_ = fit::read_merl(path);
     measured_name_ = path;
@@ -97,24 +171,48 @@ void BrdfPanel::draw(render::EffectSession* session) {
         ImGui::TextWrapped("Open a .brdf file (BRDF Explorer's format) to plot its BRDF and check it for energy conservation and reciprocity.");
         return;
     }
-    ImGui::SliderFloat("Incidence", &incidence_, 0.0f, 89.0f, "%.0f deg");
-    ImGui::SameLine();
-    ImGui::Checkbox("Log", &logarithmic_);
+    static const char* views[] = {"Polar plot", "3D lobe", "Slice (theta_h, theta_d)", "Lit sphere"};
+    int view = static_cast<int>(view_);
+    if (ImGui::Combo("View", &view, views, IM_ARRAYSIZE(views))) view_ = static_cast<View>(view);
+    if (view_ == View::Slice) {
+        ImGui::SliderFloat("phi_d", &phi_d_, 0.0f, 180.0f, "%.0f deg");
+    } else if (view_ != View::Sphere) {
+        ImGui::SliderFloat("Incidence", &incidence_, 0.0f, 89.0f, "%.0f deg");
+    }
+    if (view_ == View::Polar || view_ == View::Slice) {
+        ImGui::SameLine();
+        ImGui::Checkbox("Log", &logarithmic_);
+    }
     update_plane(*session);
+    if (view_ != View::Polar) update_picture(*session);
     if (!error_.empty()) {
         ImGui::TextWrapped("%s", error_.c_str());
         return;
     }
-    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-    ImGui::TextWrapped("f(l, v) in the plane of incidence (mean of R, G, B); mirror side left, light in yellow");
-    ImGui::PopStyleColor();
-    if (measured_ && measured_incidence_ != incidence_) {
-        measured_plane_.clear();
-        for (const auto& f : app::measured_plane(*measured_, incidence_, kPlaneSamples)) measured_plane_.push_back((f[0] + f[1] + f[2]) / 3.0);
-        measured_incidence_ = incidence_;
+    if (view_ != View::Polar) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+        ImGui::TextWrapped("%s", picture_caption_.c_str());
+        ImGui::PopStyleColor();
+        picture_.draw();
+    } else {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+        ImGui::TextWrapped("f(l, v) in the plane of incidence (mean of R, G, B); mirror side left, light in yellow");
+        ImGui::PopStyleColor();
+        if (measured_ && measured_incidence_ != incidence_) {
+            measured_plane_.clear();
+            for (const auto& f : app::measured_plane(*measured_, incidence_, kPlaneSamples)) measured_plane_.push_back((f[0] + f[1] + f[2]) / 3.0);
+            measured_incidence_ = incidence_;
+        }
+        std::vector<Curve> curves{{&plane_, kLiveColour}};
+        if (measured_) curves.push_back({&measured_plane_, kMeasuredColour});
+        for (size_t k = 0; k < kept_.size(); ++k) curves.push_back({&kept_[k].values, kept_colour(k)});
+        draw_polar(curves, incidence_, logarithmic_, std::min(ImGui::GetContentRegionAvail().x * 0.55f, 320.0f));
+        if (ImGui::Button("Keep curve")) keep_curve(*session);
+        ImGui::SameLine();
+        ImGui::TextDisabled("(to compare: change parameters or open another file)");
+        for (size_t k = 0; k < kept_.size(); ++k) ImGui::TextColored(to_vec4(kept_colour(k)), "%s", kept_[k].label.c_str());
+        if (!kept_.empty() && ImGui::SmallButton("Clear kept curves")) kept_.clear();
     }
-    draw_polar(plane_, measured_ ? measured_plane_ : std::vector<double>{}, incidence_, logarithmic_,
-               std::min(ImGui::GetContentRegionAvail().x * 0.55f, 320.0f));
     ImGui::InputTextWithHint("##measured", "MERL .binary file to compare", measured_path_, sizeof measured_path_);
     ImGui::SameLine();
     if (ImGui::Button("Load measured")) {

@@ -1,5 +1,7 @@
-// The BRDF tab: for an effect with the BRDF grid (every .brdf file), BRDF Explorer's polar plot of the
-// plane of incidence, live as parameters change, and on request the physics checks of brdf-check
+// The BRDF tab: for an effect with the BRDF grid (every .brdf file), BRDF Explorer's views live as
+// parameters change: the polar plot of the plane of incidence (with kept curves of earlier parameter
+// values or other files overlaid), the 3D lobe, Rusinkiewicz's (θh, θd) slice and the lit sphere;
+// and on request the physics checks of brdf-check
 // (directional albedo against incidence, reciprocity, negative and NaN values). Values come from the
 // GPU through the viewer's own session (app/brdf_evaluation.hpp).
 #pragma once
@@ -11,6 +13,7 @@
 #include "app/brdf_check.hpp"
 #include "fit/merl.hpp"
 #include "render/effect_session.hpp"
+#include "ui/ui_image.hpp"
 
 namespace fxview::ui {
 
@@ -22,9 +25,34 @@ public:
     // A MERL file to overlay on the polar plot (the Measured field; the script verb brdf-measured).
     // Throws Error naming the file when it cannot be read.
     void load_measured(const std::string& path);
+    // Keeps the current polar curve for comparison (the Keep curve button; the script verb brdf-keep).
+    void keep_curve(render::EffectSession& session);
+    size_t kept_curves() const { return kept_.size(); }
+
+    enum class View { Polar, Lobe, Slice, Sphere };
+    // The view shown (the View combo; the script verb brdf-view polar|lobe|slice|sphere), drawn at
+    // once: returns its caption; throws Error when the BRDF could not be evaluated.
+    std::string show(View view, render::EffectSession& session);
 
 private:
+    struct KeptCurve {
+        std::string label;
+        std::vector<double> values;
+    };
     void update_plane(render::EffectSession& session);
+    void update_picture(render::EffectSession& session);
+
+    View view_ = View::Polar;
+    float phi_d_ = 90.0f;
+    std::vector<KeptCurve> kept_;
+    UiImage picture_;  // lobe, slice or sphere
+    View pictured_view_ = View::Polar;
+    std::string picture_caption_;
+    std::map<std::string, std::vector<double>> picture_values_;
+    const void* picture_effect_ = nullptr;
+    float picture_incidence_ = -1.0f, picture_phi_d_ = -1.0f;
+    std::string picture_technique_;
+    bool picture_log_ = false;
 
     float incidence_ = 30.0f;
     bool logarithmic_ = false;

@@ -156,22 +156,8 @@ void PluginPanel::finish(render::EffectSession* session) {
         if (!result->technique.empty() && session->effect().find_technique(result->technique)) session->select_technique(result->technique);
     }
     if (curve_.size() < 2) curve_ = result->cost_per_iteration;  // the live reports, else the plugin's own history
-    if (result->preview) upload_preview(*result->preview);
+    if (result->preview) preview_ = upload_ui_image(*result->preview, true);
     result_ = std::move(result);
-}
-
-// The preview as an 8-bit sRGB texture for ImGui (the UI draws sRGB bytes).
-void PluginPanel::upload_preview(const image::FloatImage& preview) {
-    std::vector<std::uint8_t> bytes(static_cast<size_t>(preview.width) * preview.height * 4);
-    for (size_t i = 0; i < bytes.size(); ++i)
-        bytes[i] = image::to_8bit(preview.data[i], i % 4 == 3 ? image::Encoding::Linear : image::Encoding::Srgb);
-    preview_ = gl::create_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(preview_.get(), 1, GL_RGBA8, preview.width, preview.height);
-    glTextureSubImage2D(preview_.get(), 0, 0, 0, preview.width, preview.height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
-    glTextureParameteri(preview_.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(preview_.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    preview_width_ = preview.width;
-    preview_height_ = preview.height;
 }
 
 void PluginPanel::draw(render::EffectSession* session) {
@@ -217,11 +203,9 @@ void PluginPanel::draw(render::EffectSession* session) {
         else ImGui::TextColored(kRed, "NOT converged");
         for (const auto& line : result_->summary) ImGui::TextWrapped("%s", line.c_str());
         for (const auto& warning : result_->warnings) ImGui::TextColored(kAmber, "%s", warning.c_str());
-        if (preview_.get() != 0) {
+        if (!preview_.empty()) {
             ImGui::TextDisabled("%s", result_->preview_caption.c_str());
-            const float width = ImGui::GetContentRegionAvail().x;
-            const float height = width * static_cast<float>(preview_height_) / static_cast<float>(preview_width_);
-            ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(preview_.get())), ImVec2(width, height));
+            preview_.draw();
         }
     }
     ImGui::PopTextWrapPos();

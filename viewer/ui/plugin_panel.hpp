@@ -14,6 +14,7 @@
 #include "gl/objects.hpp"
 #include "plugin/plugin.hpp"
 #include "render/effect_session.hpp"
+#include "ui/ui_image.hpp"
 
 namespace fxview::ui {
 
@@ -52,7 +53,6 @@ public:
 
 private:
     void finish(render::EffectSession* session);
-    void upload_preview(const image::FloatImage& preview);
 
     const effect::Effect* effect_ = nullptr;  // what `plugins_` were made for
     std::vector<std::unique_ptr<plugin::Plugin>> plugins_;
@@ -65,8 +65,7 @@ private:
     std::string last_plugin_, error_;
     std::optional<plugin::Result> result_;
     std::vector<double> curve_;
-    gl::Texture preview_;
-    int preview_width_ = 0, preview_height_ = 0;
+    UiImage preview_;
 };
 
 }  // namespace fxview::ui

@@ -663,6 +663,20 @@ private:
             std::cout << nlohmann::json{{"brdf_measured", args[0]}}.dump() << std::endl;
             requested_tab_ = "BRDF";
             wait_frames_ = 1;
+        } else if (a.verb == "brdf-view") {  // as the BRDF tab's View combo
+            static const std::map<std::string, BrdfPanel::View> views = {
+                {"polar", BrdfPanel::View::Polar}, {"lobe", BrdfPanel::View::Lobe}, {"slice", BrdfPanel::View::Slice}, {"sphere", BrdfPanel::View::Sphere}};
+            if (!views.count(args[0])) throw UsageError("brdf-view: polar, lobe, slice or sphere");
+            if (!session() || !app::has_brdf_grid(*session())) throw UsageError("brdf-view: the effect has no BRDF grid (open a .brdf file)");
+            std::cout << nlohmann::json{{"brdf_view", args[0]}, {"caption", brdf_panel_.show(views.at(args[0]), *session())}}.dump() << std::endl;
+            requested_tab_ = "BRDF";
+            wait_frames_ = 1;
+        } else if (a.verb == "brdf-keep") {  // as the BRDF tab's Keep curve
+            if (!session() || !app::has_brdf_grid(*session())) throw UsageError("brdf-keep: the effect has no BRDF grid (open a .brdf file)");
+            brdf_panel_.keep_curve(*session());
+            std::cout << nlohmann::json{{"brdf_kept_curves", brdf_panel_.kept_curves()}}.dump() << std::endl;
+            requested_tab_ = "BRDF";
+            wait_frames_ = 1;
         } else if (a.verb == "inspect-texture") {
             if (!session() || !session()->resources().find(args[0])) throw UsageError("inspect-texture: the effect has no texture '" + args[0] + "'");
             const char* channels[] = {"rgba", "r", "g", "b", "a"};
