@@ -6,6 +6,7 @@
 // viewer/reference/brdf_reference.cpp on viewer/brdf/models.cpp.
 #include "standard.glsl"
 #include "brdf.glsl"
+#include "environment.glsl"
 
 uniform float LightIrradiance < string UIName = "Light irradiance E"; float UIMin = 0; float UIMax = 20; float UIStep = 0.1; string UIGroup = "Light";
                                 string UIHelp = "Irradiance the point light delivers at normal incidence (no distance fall-off)"; > = 3.0;
@@ -69,6 +70,7 @@ GLSLShader LambertFS {
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? BaseColor / kPi : vec3(0.0));
+        if (f.nv > 0.0) color.rgb += BaseColor * environment_irradiance(f.n);
         fx_capture();
     }
 }
@@ -80,6 +82,7 @@ GLSLShader PBRFS {
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? metallic_roughness(f, BaseColor, Metallic, Roughness) : vec3(0.0));
+        color.rgb += metallic_roughness_environment(f, BaseColor, Metallic, Roughness);
         fx_capture();
     }
 }

@@ -24,7 +24,9 @@ CommandRunner add_render_command(CLI::App& app) {
         const RenderRequest request = to_render_request(options->scene);
         const auto parent = std::filesystem::path(options->out).parent_path();
         if (!parent.empty()) std::filesystem::create_directories(parent);
-        const image::FloatImage image = render_offscreen(request);
+        image::FloatImage image = render_offscreen(request);
+        if (std::filesystem::path(options->out).extension() == ".png")  // 8-bit pictures: through the display transform
+            image::apply_display_transform(image, request.display);
         image::write_image(options->out, image, options->no_srgb ? image::Encoding::Linear : image::Encoding::Srgb);
         std::cout << "wrote " << options->out << " (" << image.width << "x" << image.height << ")\n";
         return 0;

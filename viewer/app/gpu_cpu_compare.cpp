@@ -68,7 +68,7 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
 
     effect::ParameterValues cpu_values = session.values();
     for (const auto& assignment : reference_sets) effect::set_value_from_text(session.effect(), cpu_values, assignment);
-    const reference::ReferenceContext reference_context{cpu_values, session.resources()};
+    const reference::ReferenceContext reference_context{cpu_values, session.resources(), &request.scene.environment};
     const double tolerance = ref->tolerance_for ? ref->tolerance_for(reference_context) : ref->tolerance;
     result.tolerance = tolerance;
     const glm::dvec3 camera(math::camera_world_position(request.scene.camera.pose));

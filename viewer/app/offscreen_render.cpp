@@ -8,6 +8,7 @@
 #include "gl/render_target.hpp"
 #include "render/debug_renderer.hpp"
 #include "render/effect_session.hpp"
+#include "render/skybox.hpp"
 
 namespace fxview::app {
 
@@ -28,6 +29,12 @@ image::FloatImage render_offscreen(const RenderRequest& request) {
         if (!request.effect.save_preset.empty())
             effect::save_preset(request.effect.save_preset, session->effect(), session->technique(), session->values());
         session->render(request.scene, target);
+        if (!request.scene.environment.source.empty()) {  // the environment behind the objects
+            const render::EnvironmentMaps& environment = session->environment(request.scene.environment);
+            render::Skybox().draw(environment.texture("environment:specular")->texture.get(), request.scene.camera, target,
+                                  {request.scene.environment.world_to_environment(), request.scene.environment.intensity, true});
+            target.resolve();
+        }
     }
     image::FloatImage image = target.read_color(0);
 

@@ -2,6 +2,7 @@
 
 #include "app/value_parsing.hpp"
 #include "core/error.hpp"
+#include "effect/preset.hpp"
 #include "math/transform.hpp"
 
 namespace fxview::app {
@@ -12,7 +13,7 @@ void add_scene_options(CLI::App& command, SceneOptions& o) {
     command.add_option("--size", o.size, "Image size WIDTHxHEIGHT")->capture_default_str();
     command.add_option("--backend", o.backend, "GL context: egl (headless), egl-device (headless, EGL device platform only), osmesa (software) or glfw (window)")
         ->capture_default_str();
-    command.add_option("--samples", o.samples, "MSAA samples (0 = off)")->check(CLI::Range(0, 32));
+    command.add_option("--samples", o.samples_given, "MSAA samples (0 = off; default: the preset's, else 0)")->check(CLI::Range(0, 32));
     command.add_option("--debug-view", o.debug_view, "Debug shader: normals, uv, camera or light")->capture_default_str();
     command.add_option("--camera-distance", o.camera_distance, "Camera Z translation (zoom)")
         ->check(CLI::Range(0.01f, 1000.0f))
@@ -26,6 +27,13 @@ void add_scene_options(CLI::App& command, SceneOptions& o) {
     command.add_option("--object-rotate", o.object_rotate, "Object rotation X,Y,Z in degrees");
     command.add_option("--object-scale", o.object_scale, "Object scale X,Y,Z");
     command.add_option("--background", o.background, "Clear colour R,G,B,A (linear)");
+    command.add_option("--environment", o.environment,
+                       "Environment that lights image-based-lighting effects and fills the background: studio, sky[:ELEV[,CCT]], "
+                       "furnace, none, an equirectangular .hdr/.exr, a cube cross, a cube .dds, or six face files F1,...,F6 (+X -X +Y -Y +Z -Z)");
+    command.add_option("--environment-rotate", o.environment_rotate, "Environment rotation about the vertical axis, degrees");
+    command.add_option("--environment-intensity", o.environment_intensity, "Environment radiance scale")->check(CLI::Range(0.0f, 1e6f));
+    command.add_option("--exposure", o.exposure, "Exposure in EV stops for PNG output (factor 2^EV)")->check(CLI::Range(-30.0f, 30.0f));
+    command.add_option("--tone-map", o.tone_map, "Tone mapper for PNG output: none, aces or pbr-neutral");
     command.add_flag("--gl-debug", o.gl_debug, "Print KHR_debug messages of the driver");
     add_effect_options(command, o.effect);
 }
@@ -37,7 +45,10 @@ RenderRequest to_render_request(const SceneOptions& o) {
     const glm::ivec2 size = parse_size("--size", o.size);
     request.width = size.x;
     request.height = size.y;
-    request.samples = o.samples;
+    // The preset's scene settings, where the command line gives none.
+    effect::PresetScene preset;
+    if (!o.effect.preset.empty()) preset = effect::load_preset_scene(o.effect.preset);
+    request.samples = o.samples_given.value_or(preset.samples.value_or(o.samples));
 #ifndef NDEBUG
     request.gl_debug = true;  // debug builds always check GL errors
 #else
@@ -57,6 +68,12 @@ RenderRequest to_render_request(const SceneOptions& o) {
     object.pose.rotation = math::rotation_from_euler_degrees(parse_vec3("--object-rotate", o.object_rotate));
     object.scale = parse_vec3("--object-scale", o.object_scale);
     scene.background = parse_vec4("--background", o.background);
+    const std::string environment = o.environment.value_or(preset.environment.value_or(""));
+    scene.environment.source = environment == "none" ? "" : environment;
+    scene.environment.rotation_degrees = o.environment_rotate.value_or(preset.environment_rotate.value_or(0.0f));
+    scene.environment.intensity = o.environment_intensity.value_or(preset.environment_intensity.value_or(1.0f));
+    request.display.exposure_ev = o.exposure.value_or(preset.exposure.value_or(0.0f));
+    request.display.tone_map = image::parse_tone_map(o.tone_map.value_or(preset.tone_map.value_or("none")));
     request.effect = o.effect;
     return request;
 }

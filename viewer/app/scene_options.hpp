@@ -3,10 +3,12 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
 
 #include "app/effect_options.hpp"
 #include "context/context.hpp"
+#include "image/display_transform.hpp"
 #include "render/debug_renderer.hpp"
 #include "scene/scene.hpp"
 
@@ -28,6 +30,10 @@ struct SceneOptions {
     std::string object_rotate = "0,0,0";
     std::string object_scale = "1,1,1";
     std::string background = "0,0,0,0";
+    // Unset: the preset's "scene" settings (effect/preset.hpp), else none / 0 / 1 / none.
+    std::optional<std::string> environment, tone_map;
+    std::optional<float> environment_rotate, environment_intensity, exposure;
+    std::optional<int> samples_given;
     bool gl_debug = false;
     EffectOptions effect;
 };
@@ -42,6 +48,7 @@ struct RenderRequest {
     int samples = 0;
     bool gl_debug = false;
     EffectOptions effect;  // path empty: the built-in debug view
+    image::DisplaySettings display;  // for PNG output (EXR and PFM stay scene-linear)
 };
 
 RenderRequest to_render_request(const SceneOptions& options);  // throws UsageError on bad values

@@ -25,14 +25,15 @@ void save_preset(const std::string& path, const Effect& effect, const std::strin
     if (!file) throw Error(path + ": cannot write preset");
 }
 
-Preset load_preset(const std::string& path, const Effect& effect, ParameterValues& values) {
-    checked_file_size(path, effect.limits);
+namespace {
+
+nlohmann::json read_preset_json(const std::string& path, const ResourceLimits& limits, std::string& text) {
+    checked_file_size(path, limits);
     std::ifstream file(path, std::ios::binary);
     if (!file) throw Error(path + ": cannot open preset");
-    const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    nlohmann::json json;
+    text.assign((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
     try {
-        json = nlohmann::json::parse(text);
+        return nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& error) {
         // "file:line: message" from the byte offset, without the library's own prefix and excerpt.
         const size_t offset = std::min(error.byte == 0 ? size_t{0} : error.byte - 1, text.size());
@@ -41,12 +42,50 @@ Preset load_preset(const std::string& path, const Effect& effect, ParameterValue
     } catch (const nlohmann::json::exception&) {
         throw Error(path + ":1: not a valid JSON preset");
     }
+}
+
+std::string line_of(const std::string& path, const std::string& text, const std::string& key) {
+    const size_t at = text.find("\"" + key + "\"");
+    const auto line = at == std::string::npos ? 1 : 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n');
+    return path + ":" + std::to_string(line) + ": ";
+}
+
+}  // namespace
+
+PresetScene load_preset_scene(const std::string& path, const ResourceLimits& limits) {
+    std::string text;
+    const nlohmann::json json = read_preset_json(path, limits, text);
+    PresetScene scene;
+    if (!json.is_object() || !json.contains("scene")) return scene;
+    const nlohmann::json& s = json["scene"];
+    if (!s.is_object()) throw Error(line_of(path, text, "scene") + "\"scene\" must be an object");
+    for (const auto& [key, value] : s.items()) {
+        const auto bad = [&](const char* what) { return Error(line_of(path, text, key) + "scene \"" + key + "\" must be " + what); };
+        if (key == "environment") {
+            if (!value.is_string()) throw bad("a string");
+            scene.environment = value.get<std::string>();
+        } else if (key == "environment_rotate" || key == "environment_intensity" || key == "exposure") {
+            if (!value.is_number()) throw bad("a number");
+            (key == "environment_rotate" ? scene.environment_rotate : key == "exposure" ? scene.exposure : scene.environment_intensity) = value.get<float>();
+        } else if (key == "tone_map") {
+            if (!value.is_string()) throw bad("a string");
+            scene.tone_map = value.get<std::string>();
+        } else if (key == "samples") {
+            if (!value.is_number_integer() || value.get<int>() < 0 || value.get<int>() > 32) throw bad("an integer 0-32");
+            scene.samples = value.get<int>();
+        } else {
+            throw Error(line_of(path, text, key) + "unknown scene setting \"" + key +
+                        "\" (environment, environment_rotate, environment_intensity, exposure, tone_map, samples)");
+        }
+    }
+    return scene;
+}
+
+Preset load_preset(const std::string& path, const Effect& effect, ParameterValues& values) {
+    std::string text;
+    const nlohmann::json json = read_preset_json(path, effect.limits, text);
     // Messages name the line where the entry's key first appears.
-    const auto where = [&](const std::string& key) {
-        const size_t at = text.find("\"" + key + "\"");
-        const auto line = at == std::string::npos ? 1 : 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n');
-        return path + ":" + std::to_string(line) + ": ";
-    };
+    const auto where = [&](const std::string& key) { return line_of(path, text, key); };
     if (!json.is_object() || !json.contains("parameters") || !json["parameters"].is_object())
         throw Error(where("parameters") + "a preset needs a \"parameters\" object");
     if (json.contains("effect") && !json["effect"].is_string()) throw Error(where("effect") + "\"effect\" must be a string");

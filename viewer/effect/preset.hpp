@@ -2,7 +2,10 @@
 // JSON file, {"effect": "...", "technique": "...", "parameters": {"Name": 0.5, "Color": [1,0,0],
 // "Sampler": "file.png"}}.
 #pragma once
+#include <optional>
 #include <string>
+
+#include "core/limits.hpp"
 
 #include "effect/parameter_values.hpp"
 
@@ -15,6 +18,17 @@ struct Preset {
 };
 
 void save_preset(const std::string& path, const Effect& effect, const std::string& technique, const ParameterValues& values);
+// The scene and display settings a preset may carry besides its values, {"scene": {"environment":
+// "studio", "environment_rotate": 0, "environment_intensity": 1, "exposure": 0, "tone_map":
+// "pbr-neutral", "samples": 4}}: what the CLI and the viewer use unless told otherwise. Error naming
+// file and line for a wrong type or an unknown key.
+struct PresetScene {
+    std::optional<std::string> environment, tone_map;
+    std::optional<float> environment_rotate, environment_intensity, exposure;
+    std::optional<int> samples;
+};
+PresetScene load_preset_scene(const std::string& path, const ResourceLimits& limits = {});
+
 // Reads a preset and applies it over `values`; throws Error naming the file for bad JSON, an
 // unknown parameter or a value of the wrong size.
 Preset load_preset(const std::string& path, const Effect& effect, ParameterValues& values);

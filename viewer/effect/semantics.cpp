@@ -11,7 +11,7 @@ namespace {
 const std::vector<std::string> kMatrixBases = {"WORLDVIEWPROJECTION", "VIEWPROJECTION", "WORLDVIEW",
                                                "PROJECTION", "WORLD", "VIEW"};
 const std::vector<std::string> kOthers = {"CAMERAPOSITION", "LIGHTPOSITION", "LIGHTDIRECTION", "VIEWPORTPIXELSIZE",
-                                          "TIME", "FRAME"};
+                                          "TIME", "FRAME", "ENVIRONMENTROTATION", "ENVIRONMENTINTENSITY"};
 
 std::optional<glm::mat4> matrix_for(const std::string& semantic, const FrameContext& f) {
     for (const auto& base : kMatrixBases) {
@@ -57,6 +57,12 @@ std::vector<float> semantic_value(const std::string& semantic, const FrameContex
     }
     if (semantic == "VIEWPORTPIXELSIZE") return {f.viewport_size.x, f.viewport_size.y, 1.0f / f.viewport_size.x, 1.0f / f.viewport_size.y};
     if (semantic == "TIME") return {f.time};
+    if (semantic == "ENVIRONMENTINTENSITY") return {f.environment_intensity};
+    if (semantic == "ENVIRONMENTROTATION") {  // mat3 (or the mat4 holding it), column-major
+        const glm::mat3& m = f.environment_rotation;
+        if (components == 9) return {m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1], m[2][2]};
+        return {m[0][0], m[0][1], m[0][2], 0.0f, m[1][0], m[1][1], m[1][2], 0.0f, m[2][0], m[2][1], m[2][2], 0.0f, 0.0f, 0.0f, 0.0f, 1.0f};
+    }
     if (semantic == "FRAME") return {static_cast<float>(f.frame)};
     return {};
 }

@@ -14,6 +14,8 @@ struct FrameContext {
     glm::vec3 camera_position{0.0f};
     glm::vec3 light_position{0.0f};
     glm::vec2 viewport_size{1.0f};
+    glm::mat3 environment_rotation{1.0f};  // world -> environment directions
+    float environment_intensity = 0.0f;    // 0 without an environment
     float time = 0.0f;
     int frame = 0;
 };

@@ -10,6 +10,7 @@
 
 #include "brdf/models.hpp"
 #include "reference/brdf_sensitivity.hpp"
+#include "reference/environment_reference.hpp"
 
 namespace fxview::reference {
 namespace {
@@ -160,12 +161,52 @@ Reference grid_reference() {
     return r;
 }
 
+// A technique that adds the scene environment's light (environment.glsl) to the point light's.
+// Tolerance of that term: the GPU's bilinear weights and cube-map texel addressing are computed with
+// limited precision (GL allows fixed-point weights; 8 fractional bits give 1/512 of the step between
+// neighbouring texels), so the environment term gets 1e-3 of its value (at least of 1) as slack,
+// a quarter of one 8-bit code value at display white; plus, at cube corners, the spread of the
+// texels GL leaves to the implementation.
+using EnvironmentTerm = glm::dvec3 (*)(const EnvironmentLookup&, const brdf::Directions&, const ReferenceContext&, double* seam);
+
+Reference with_environment(Reference point_light, EnvironmentTerm term) {
+    const Shader shade = point_light.shade;
+    point_light.shade = [shade, term](const ShadingInput& in, const ReferenceContext& c) {
+        std::array<double, 4> value = shade(in, c);
+        if (const auto environment = EnvironmentLookup::from(c)) {
+            const glm::dvec3 e = term(*environment, directions(in), c, nullptr);
+            for (int k = 0; k < 3; ++k) value[static_cast<size_t>(k)] += e[k];
+        }
+        return value;
+    };
+    const auto slack = point_light.slack;
+    point_light.slack = [slack, term](const ShadingInput& in, const ReferenceContext& c) {
+        double total = slack ? slack(in, c) : 0.0;
+        if (const auto environment = EnvironmentLookup::from(c)) {
+            double seam = 0.0;
+            const glm::dvec3 e = glm::abs(term(*environment, directions(in), c, &seam));
+            total += seam + 1e-3 * std::max({1.0, e.r, e.g, e.b});
+        }
+        return total;
+    };
+    point_light.why += "; the environment's light: 1e-3 of it (the GPU's bilinear weights), plus the texel spread at cube corners";
+    return point_light;
+}
+
+glm::dvec3 lambert_environment(const EnvironmentLookup& environment, const brdf::Directions& d, const ReferenceContext& c, double*) {
+    return glm::dot(d.n, d.v) > 0.0 ? lambert(c).albedo * environment.irradiance(d.n) : glm::dvec3(0.0);
+}
+
+glm::dvec3 pbr_environment(const EnvironmentLookup& environment, const brdf::Directions& d, const ReferenceContext& c, double* seam) {
+    return metallic_roughness_environment(environment, d, pbr(c), c.number("EnergyCompensation") != 0.0, seam);
+}
+
 }  // namespace
 
 std::map<std::string, Reference> brdf_references() {
     std::map<std::string, Reference> all;
-    all.emplace("Lambert", make(lambert, 1e-4, kWhy));
-    all.emplace("PBR", make(pbr, 1e-4, kWhy));
+    all.emplace("Lambert", with_environment(make(lambert, 1e-4, kWhy), lambert_environment));
+    all.emplace("PBR", with_environment(make(pbr, 1e-4, kWhy), pbr_environment));
     all.emplace("ModifiedPhong", make(modified_phong, 1e-4, kWhy));
     all.emplace("CookTorranceBeckmann", make(cook_torrance_beckmann, 1e-4, kWhy));
     all.emplace("AshikhminShirley", make(ashikhmin_shirley, 1e-4, kWhy));

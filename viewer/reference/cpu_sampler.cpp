@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "lighting/cube_map.hpp"
 #include "image/color_encoding.hpp"
 
 namespace fxview::reference {
@@ -33,35 +34,6 @@ glm::dvec4 texel(const texture::TextureData& t, bool srgb, int i, int j, int fac
     return value;
 }
 
-struct FaceCoordinates {
-    int face;
-    double s, t;
-};
-
-// GL 4.5 core table 8.19: the major axis picks the face, sc / tc / ma its coordinates.
-FaceCoordinates select_face(const glm::dvec3& r) {
-    const glm::dvec3 a = glm::abs(r);
-    double sc, tc, ma;
-    int face;
-    if (a.x >= a.y && a.x >= a.z) {
-        face = r.x > 0 ? 0 : 1;
-        sc = r.x > 0 ? -r.z : r.z;
-        tc = -r.y;
-        ma = a.x;
-    } else if (a.y >= a.z) {
-        face = r.y > 0 ? 2 : 3;
-        sc = r.x;
-        tc = r.y > 0 ? r.z : -r.z;
-        ma = a.y;
-    } else {
-        face = r.z > 0 ? 4 : 5;
-        sc = r.z > 0 ? r.x : -r.x;
-        tc = -r.y;
-        ma = a.z;
-    }
-    return {face, 0.5 * (sc / ma + 1.0), 0.5 * (tc / ma + 1.0)};
-}
-
 // The direction through the centre of texel (i, j) of `face`. A coordinate one texel outside the face
 // is put just across its edge instead, so that re-selecting the face lands on the neighbouring face's
 // edge texel at the same place along the edge (a texel centre further out would be projected and
@@ -72,15 +44,7 @@ glm::dvec3 texel_direction(int face, int i, int j, int size) {
         if (k >= size) return 1.0 + 1e-9;
         return 2.0 * (k + 0.5) / size - 1.0;
     };
-    const double sc = coordinate(i), tc = coordinate(j);
-    switch (face) {
-        case 0: return {1.0, -tc, -sc};
-        case 1: return {-1.0, -tc, sc};
-        case 2: return {sc, 1.0, tc};
-        case 3: return {sc, -1.0, -tc};
-        case 4: return {sc, -tc, 1.0};
-        default: return {-sc, -tc, -1.0};
-    }
+    return lighting::cube_direction(face, 0.5 * (coordinate(i) + 1.0), 0.5 * (coordinate(j) + 1.0));
 }
 
 }  // namespace
@@ -90,7 +54,7 @@ CubeSample sample_cube(const texture::TextureData& t, const effect::SamplerState
         throw Error("CPU sampler: mipmapped filtering depends on screen derivatives; use nearest or linear");
     if (s.min_filter != s.mag_filter) throw Error("CPU sampler: min and mag filters must agree");
     const int size = t.width();
-    const FaceCoordinates f = select_face(direction);
+    const lighting::CubeFace f = lighting::select_cube_face(direction);
     if (s.min_filter == GL_NEAREST) {
         const int i = std::clamp(static_cast<int>(std::floor(f.s * size)), 0, size - 1);
         const int j = std::clamp(static_cast<int>(std::floor(f.t * size)), 0, size - 1);
@@ -102,7 +66,7 @@ CubeSample sample_cube(const texture::TextureData& t, const effect::SamplerState
     // Seamless filtering: a tap across one edge reads the neighbouring face's edge texel.
     const auto tap = [&](int i, int j) {
         if (i >= 0 && i < size && j >= 0 && j < size) return texel(t, srgb, i, j, f.face);
-        const FaceCoordinates n = select_face(texel_direction(f.face, i, j, size));
+        const lighting::CubeFace n = lighting::select_cube_face(texel_direction(f.face, i, j, size));
         const int ni = std::clamp(static_cast<int>(std::floor(n.s * size)), 0, size - 1);
         const int nj = std::clamp(static_cast<int>(std::floor(n.t * size)), 0, size - 1);
         return texel(t, srgb, ni, nj, n.face);

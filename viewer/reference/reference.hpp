@@ -11,6 +11,7 @@
 #include "effect/parameter_values.hpp"
 #include "reference/cpu_sampler.hpp"
 #include "render/effect_resources.hpp"
+#include "scene/scene.hpp"
 
 namespace fxview::reference {
 
@@ -31,6 +32,8 @@ struct ShadingInput {
 struct ReferenceContext {
     const effect::ParameterValues& values;
     const render::EffectResources& resources;
+    // The scene's environment (rotation, intensity) whose maps resources.environment() holds; null: none.
+    const scene::Environment* environment = nullptr;
 
     double number(const std::string& name) const;  // first component of a parameter; Error if absent
     const spectral::PackedTexture& generated(const std::string& texture) const;

@@ -1,4 +1,5 @@
 #include "render/effect_resources.hpp"
+#include "render/environment_maps.hpp"
 #include "render/measured_brdf_texture.hpp"
 
 #include <cmath>
@@ -127,6 +128,8 @@ const spectral::PackedTexture* EffectResources::generated(const std::string& tex
 }
 
 const GpuTexture* EffectResources::acquire(const std::string& texture_name) {
+    if (const auto environment = environment_resources_.find(texture_name); environment != environment_resources_.end())
+        return environment_ ? environment_->texture(environment->second) : nullptr;
     if (!textures_.count(texture_name) && generated_resources_.count(texture_name)) {
         const spectral::PackedTexture& packed = *generated(texture_name);
         GpuTexture gpu;
@@ -147,6 +150,13 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
     for (const auto& resource : effect.textures) {
         if (resource.render_target) continue;
         try {
+            if (resource.files.size() == 1 && resource.files[0].rfind("environment:", 0) == 0) {
+                if (!EnvironmentMaps::is_resource_name(resource.files[0]))
+                    throw effect::EffectError(resource.where, "unknown environment texture '" + resource.files[0] +
+                                                                  "' (environment:specular, environment:irradiance or environment:dfg)");
+                environment_resources_.emplace(resource.name, resource.files[0]);
+                continue;
+            }
             if (resource.files.size() == 1 && resource.files[0].rfind("spectral:", 0) == 0) {
                 // Checked now, made when a pass first samples it (acquire) or a CPU reference reads it
                 // (generated): the thin-film transforms take a fifth of a second that techniques not
@@ -260,6 +270,8 @@ void EffectResources::fit_render_targets(int frame_width, int frame_height) {
 }
 
 const GpuTexture* EffectResources::find(const std::string& texture_name) const {
+    if (const auto environment = environment_resources_.find(texture_name); environment != environment_resources_.end())
+        return environment_ ? environment_->texture(environment->second) : nullptr;
     const auto found = textures_.find(texture_name);
     return found == textures_.end() ? nullptr : &found->second;
 }

@@ -29,6 +29,8 @@ struct GpuTexture {
     std::string source;  // file(s), or "render target"
 };
 
+class EnvironmentMaps;
+
 class EffectResources {
 public:
     // Throws EffectError at the texture's declaration for a missing, unreadable or unfit file.
@@ -38,6 +40,11 @@ public:
     // Makes every render target match the frame size (times its ViewportRatio, or its Dimensions).
     void fit_render_targets(int frame_width, int frame_height);
     const GpuTexture* find(const std::string& texture_name) const;  // nullptr for a generated one not yet acquired
+    // The scene environment that "environment:..." textures come from (render/environment_maps.hpp);
+    // set by the session before each frame.
+    void set_environment(const EnvironmentMaps* environment) { environment_ = environment; }
+    const EnvironmentMaps* environment() const { return environment_; }
+    bool uses_environment() const { return !environment_resources_.empty(); }
     // find(), generating a generated texture on first use.
     const GpuTexture* acquire(const std::string& texture_name);
     GLuint sampler(const effect::SamplerState& state);
@@ -58,6 +65,8 @@ private:
     const effect::Effect& effect_;
     std::map<std::string, GpuTexture> textures_;
     std::map<std::string, const effect::TextureResource*> generated_resources_;
+    std::map<std::string, std::string> environment_resources_;  // texture name -> "environment:..."
+    const EnvironmentMaps* environment_ = nullptr;
     mutable std::mutex generated_mutex_;  // CPU references read generated textures from several threads
     mutable std::map<std::string, spectral::PackedTexture> generated_;  // made on first use
     std::map<std::string, texture::TextureData> cpu_copies_;

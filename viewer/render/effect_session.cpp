@@ -101,7 +101,17 @@ void EffectSession::reload_textures() {
     watch();
 }
 
+const EnvironmentMaps& EffectSession::environment(const scene::Environment& environment) {
+    if (!environment_ || environment_->source() != environment.source) {
+        loaded_->resources->set_environment(nullptr);
+        environment_.reset();  // a failed source leaves none rather than a stale one
+        environment_ = std::make_unique<EnvironmentMaps>(environment.source);
+    }
+    return *environment_;
+}
+
 void EffectSession::render(const scene::Scene& scene, const gl::RenderTarget& target, FrameTiming timing, bool clear_target) {
+    if (loaded_->resources->uses_environment()) loaded_->resources->set_environment(&environment(scene.environment));
     renderer_.render(scene, loaded_->techniques.at(technique_), values_, *loaded_->resources, target, timing, clear_target);
 }
 

@@ -14,6 +14,7 @@
 #include "effect/effect_program.hpp"
 #include "effect/parser.hpp"
 #include "render/effect_renderer.hpp"
+#include "render/environment_maps.hpp"
 #include "render/effect_resources.hpp"
 
 namespace fxview::render {
@@ -40,6 +41,9 @@ public:
 
     void render(const scene::Scene& scene, const gl::RenderTarget& target, FrameTiming timing = {}, bool clear_target = true);
     const EffectResources& resources() const { return *loaded_->resources; }
+    // The scene environment's maps, made (lighting/, about a second) when the source changes; the
+    // frame's effect samples them (render() calls this). Throws Error naming a bad source.
+    const EnvironmentMaps& environment(const scene::Environment& environment);
     // What a technique's compiled passes say about it, found once when it is compiled (the viewer
     // asks every frame). Unknown techniques: nothing read, not animated, no textures of their own.
     struct TechniqueTraits {
@@ -70,6 +74,7 @@ private:
     effect::ParameterValues values_;
     std::string technique_;
     EffectRenderer renderer_;
+    std::unique_ptr<EnvironmentMaps> environment_;
     std::map<std::string, std::filesystem::file_time_type> watched_;
 };
 

@@ -22,8 +22,14 @@ void main() {
 constexpr const char* kFragment = R"(#version 450 core
 in vec3 direction;
 uniform samplerCube u_cube;
+uniform mat3 u_world_to_cube;
+uniform float u_intensity;
+uniform bool u_base_level;
 layout(location = 0) out vec4 color;
-void main() { color = vec4(texture(u_cube, normalize(direction)).rgb, 1.0); })";
+void main() {
+    vec3 d = u_world_to_cube * normalize(direction);
+    color = vec4((u_base_level ? textureLod(u_cube, d, 0.0) : texture(u_cube, d)).rgb * u_intensity, 1.0);
+})";
 
 }  // namespace
 
@@ -35,7 +41,7 @@ Skybox::Skybox()
     glSamplerParameteri(sampler_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
 }
 
-void Skybox::draw(GLuint cube, const scene::Camera& camera, const gl::RenderTarget& target) {
+void Skybox::draw(GLuint cube, const scene::Camera& camera, const gl::RenderTarget& target, const SkyboxLook& look) {
     target.bind_for_drawing();
     const float aspect = static_cast<float>(target.width()) / static_cast<float>(target.height());
     const glm::mat4 projection = math::perspective_matrix(camera.fov_y_degrees, aspect, camera.near_plane, camera.far_plane);
@@ -45,6 +51,9 @@ void Skybox::draw(GLuint cube, const scene::Camera& camera, const gl::RenderTarg
     glProgramUniformMatrix4fv(program_.get(), glGetUniformLocation(program_.get(), "u_inverse_rotation_projection"), 1, GL_FALSE,
                               glm::value_ptr(inverse));
     glProgramUniform1i(program_.get(), glGetUniformLocation(program_.get(), "u_cube"), 0);
+    glProgramUniformMatrix3fv(program_.get(), glGetUniformLocation(program_.get(), "u_world_to_cube"), 1, GL_FALSE, glm::value_ptr(look.world_to_cube));
+    glProgramUniform1f(program_.get(), glGetUniformLocation(program_.get(), "u_intensity"), look.intensity);
+    glProgramUniform1i(program_.get(), glGetUniformLocation(program_.get(), "u_base_level"), look.base_level ? 1 : 0);
     glBindTextureUnit(0, cube);
     glBindSampler(0, sampler_.get());
     glEnable(GL_DEPTH_TEST);

@@ -29,9 +29,21 @@ struct SceneObject {
     glm::vec3 scale{1.0f};
 };
 
+// The environment around the scene: its radiance lights effects that use image-based lighting
+// (effects/lib/environment.glsl) and is drawn as the background. `source` as lighting/environment_sources.hpp
+// names it ("studio", "sky:35,5500", "furnace", a file); empty: none (black, lights nothing).
+struct Environment {
+    std::string source;
+    float rotation_degrees = 0.0f;  // about the vertical (+Y) axis
+    float intensity = 1.0f;         // scales its radiance
+    // World direction -> the environment's own frame (the inverse of its rotation).
+    glm::mat3 world_to_environment() const;
+};
+
 struct Scene {
     Camera camera;
     Light light;
+    Environment environment;
     std::vector<SceneObject> objects{SceneObject{}};
     glm::vec4 background{0.0f, 0.0f, 0.0f, 0.0f};
 };

@@ -1,0 +1,190 @@
+#include "lighting/environment_sources.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "image/color_encoding.hpp"
+#include "spectral/colorimetry.hpp"
+#include "spectral/generators.hpp"
+#include "texture/texture_file.hpp"
+
+namespace fxview::lighting {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+double smooth_box(double x, double half_width, double softness) {
+    return std::clamp((half_width - std::abs(x)) / softness + 0.5, 0.0, 1.0);
+}
+
+// A soft rectangular light facing the origin, centred in direction (azimuth, elevation) in degrees,
+// `width` x `height` degrees across.
+double soft_box(const glm::dvec3& d, double azimuth, double elevation, double width, double height) {
+    const double az = azimuth * kPi / 180.0, el = elevation * kPi / 180.0;
+    const glm::dvec3 centre(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+    const glm::dvec3 right = glm::normalize(glm::cross(glm::dvec3(0, 1, 0), centre));
+    const glm::dvec3 up = glm::cross(centre, right);
+    const double forward = glm::dot(d, centre);
+    if (forward <= 0.0) return 0.0;
+    const double x = std::atan2(glm::dot(d, right), forward) * 180.0 / kPi, y = std::atan2(glm::dot(d, up), forward) * 180.0 / kPi;
+    return smooth_box(x, width / 2, 4.0) * smooth_box(y, height / 2, 4.0);
+}
+
+// CIE daylight at `kelvin` as linear sRGB with luminance 1.
+glm::dvec3 daylight_rgb(double kelvin) {
+    const spectral::Observer observer = spectral::load_observer("1931");
+    const spectral::Vec3 xyz = spectral::spectrum_to_xyz(spectral::cie_daylight(kelvin), observer);
+    const spectral::Vec3 rgb = spectral::xyz_to_linear_srgb_unclipped({xyz[0] / xyz[1], 1.0, xyz[2] / xyz[1]});
+    return glm::max(glm::dvec3(rgb[0], rgb[1], rgb[2]), glm::dvec3(0.0));
+}
+
+// CIE S 011 / ISO 15469 standard clear sky, type 12: relative luminance at zenith angle z, angle to the sun chi.
+double clear_sky(double z, double chi) {
+    const double a = -1.0, b = -0.32, c = 10.0, d = -3.0, e = 0.45;
+    const double gradation = 1.0 + a * std::exp(b / std::max(std::cos(z), 1e-3));
+    const double indicatrix = 1.0 + c * (std::exp(d * chi) - std::exp(d * kPi / 2)) + e * std::cos(chi) * std::cos(chi);
+    return gradation * indicatrix;
+}
+
+FloatCube make_sky(const Sky& sky, int size) {
+    const double el = sky.sun_elevation_degrees * kPi / 180.0;
+    // The sun on the default camera's side (+Z), 40 degrees to its left: objects are front-lit.
+    const double azimuth = -40.0 * kPi / 180.0;
+    const glm::dvec3 sun(std::cos(el) * std::sin(azimuth), std::sin(el), std::cos(el) * std::cos(azimuth));
+    const double sun_radius = 1.5 * kPi / 180.0;             // widened from 0.27 deg so that the cube resolves it; its irradiance is kept
+    const double sun_solid_angle = 2.0 * kPi * (1.0 - std::cos(sun_radius));
+    const glm::dvec3 sun_colour = daylight_rgb(sky.sun_cct), sky_colour = daylight_rgb(12000.0);
+    // Sky luminance scaled so that the sky gives a horizontal surface 0.25 of the sun's irradiance on it
+    // (a clear day: diffuse about a fifth of global), and sun + sky light a white horizontal Lambertian surface to 1.
+    double sky_horizontal = 0.0;
+    const int n = 256;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < 2 * n; ++j) {
+            const double z = (i + 0.5) / n * kPi / 2, phi = (j + 0.5) / (2 * n) * 2 * kPi;
+            const glm::dvec3 d(std::sin(z) * std::sin(phi), std::cos(z), std::sin(z) * std::cos(phi));
+            sky_horizontal += clear_sky(z, std::acos(std::clamp(glm::dot(d, sun), -1.0, 1.0))) * std::cos(z) * std::sin(z) * (kPi / 2 / n) * (kPi / n);
+        }
+    const double sun_horizontal = std::max(std::sin(el), 0.02);  // irradiance 1 at normal incidence before scaling
+    const double total = sun_horizontal * 1.25;                   // sun + a quarter of it from the sky
+    const double sun_scale = kPi / total, sky_scale = 0.25 * sun_horizontal * kPi / total / sky_horizontal;
+    const double ground_radiance = 0.2 * 1.0;                     // a grey ground of albedo 0.2 under irradiance pi
+    return tabulate(size, 2, [&](const glm::dvec3& d) {
+        if (d.y < 0.0) return glm::vec3(ground_radiance * glm::mix(sun_colour, sky_colour, 0.2));
+        const double chi = std::acos(std::clamp(glm::dot(d, sun), -1.0, 1.0));
+        glm::dvec3 radiance = sky_scale * clear_sky(std::acos(std::clamp(d.y, 0.0, 1.0)), chi) * sky_colour;
+        if (chi < sun_radius) radiance += sun_scale / sun_solid_angle * sun_colour;
+        return glm::vec3(radiance);
+    });
+}
+
+// An equirectangular image (-Z at its centre, +Y at the top) resampled onto the cube.
+FloatCube from_equirectangular(const texture::TextureData& image, int size) {
+    const texture::TextureData rgba = texture::convert(image, texture::PixelFormat::RGBA32F);
+    const int width = rgba.width(), height = rgba.height();
+    const auto* texels = reinterpret_cast<const float*>(rgba.faces[0][0].bytes.data());
+    const auto at = [&](int x, int y) {
+        x = ((x % width) + width) % width;
+        y = std::clamp(y, 0, height - 1);
+        const float* p = texels + (static_cast<size_t>(y) * width + x) * 4;
+        return glm::vec3(p[0], p[1], p[2]);
+    };
+    // Enough taps per cube texel to average the image's pixels under it.
+    const int supersample = std::clamp(width / (4 * size), 1, 8) + 1;
+    return tabulate(size, supersample, [&](const glm::dvec3& d) {
+        const double u = 0.5 + std::atan2(d.x, -d.z) / (2 * kPi), v = std::acos(std::clamp(d.y, -1.0, 1.0)) / kPi;
+        const double x = u * width - 0.5, y = v * height - 0.5;
+        const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
+        const float ax = static_cast<float>(x - x0), ay = static_cast<float>(y - y0);
+        return glm::mix(glm::mix(at(x0, y0), at(x0 + 1, y0), ax), glm::mix(at(x0, y0 + 1), at(x0 + 1, y0 + 1), ax), ay);
+    });
+}
+
+// A cube's faces (any size, 8-bit sRGB or float) resampled to `size`.
+FloatCube from_cube(const texture::TextureData& data, int size) {
+    const bool srgb = data.format == texture::PixelFormat::RGBA8;
+    FloatCube source(data.width());
+    for (int face = 0; face < 6; ++face)
+        for (int y = 0; y < source.size; ++y)
+            for (int x = 0; x < source.size; ++x) {
+                float rgba[4];
+                texture::read_texel(data, face, 0, x, y, rgba);
+                glm::vec3 c(rgba[0], rgba[1], rgba[2]);
+                if (srgb)  // 8-bit images hold display values: decode to linear
+                    for (int k = 0; k < 3; ++k) c[k] = image::srgb_decode(c[k]);
+                source.at(face, x, y) = c;
+            }
+    while (source.size >= 2 * size) source = downsample(source);
+    return source.size == size ? source : tabulate(size, 2, [&](const glm::dvec3& d) { return sample_bilinear(source, d); });
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+    std::vector<std::string> parts;
+    std::stringstream stream(text);
+    for (std::string part; std::getline(stream, part, separator);) parts.push_back(part);
+    return parts;
+}
+
+FloatCube from_files(const std::string& source, int size) {
+    const std::vector<std::string> files = split(source, ',');
+    if (files.size() == 6) {
+        texture::TextureData cube;
+        cube.type = texture::TextureType::Cube;
+        for (const auto& file : files) {
+            texture::TextureData face = texture::convert(texture::load_texture_file(file), texture::PixelFormat::RGBA32F);
+            if (face.width() != face.height() || (!cube.faces.empty() && face.width() != cube.width()))
+                throw Error(file + ": the six faces of an environment must be equal squares");
+            cube.faces.push_back(std::move(face.faces[0]));
+        }
+        cube.format = texture::PixelFormat::RGBA32F;
+        return from_cube(cube, size);
+    }
+    if (files.size() != 1) throw Error("environment '" + source + "': one file, or six face files separated by commas");
+    texture::TextureData data = texture::load_texture_file(source);
+    if (data.type == texture::TextureType::Cube) return from_cube(texture::convert(data, texture::PixelFormat::RGBA32F), size);
+    if (data.width() == 2 * data.height()) return from_equirectangular(data, size);
+    if (data.width() * 3 == data.height() * 4 || data.width() * 4 == data.height() * 3)
+        return from_cube(texture::convert(texture::split_cube_cross(data), texture::PixelFormat::RGBA32F), size);
+    throw Error(source + ": an environment image must be equirectangular (width twice the height) or a cube cross (4x3 or 3x4 faces); this one is " +
+                std::to_string(data.width()) + "x" + std::to_string(data.height()));
+}
+
+}  // namespace
+
+glm::vec3 studio_radiance(const glm::dvec3& d) {
+    // Walls and ceiling a dim neutral grey, brighter overhead; the floor darker towards the nadir.
+    double base = d.y >= 0.0 ? 0.25 + 0.15 * d.y : 0.2 * (1.0 + d.y) + 0.04;
+    base += 7.0 * soft_box(d, -40.0, 35.0, 50.0, 30.0);   // key light, front left
+    base += 2.5 * soft_box(d, 70.0, 15.0, 30.0, 60.0);    // fill strip, right
+    base += 4.0 * soft_box(d, 170.0, 50.0, 80.0, 15.0);   // rim strip, behind and above
+    return glm::vec3(static_cast<float>(base));
+}
+
+Sky parse_sky(const std::string& source) {
+    Sky sky;
+    if (source == "sky") return sky;
+    const std::vector<std::string> values = split(source.substr(4), ',');
+    try {
+        if (values.size() > 2 || values.empty()) throw std::invalid_argument("count");
+        sky.sun_elevation_degrees = std::stod(values[0]);
+        if (values.size() == 2) sky.sun_cct = std::stod(values[1]);
+    } catch (const std::exception&) {
+        throw UsageError("environment '" + source + "': sky, sky:ELEVATION or sky:ELEVATION,CCT (degrees, kelvin)");
+    }
+    if (!(sky.sun_elevation_degrees >= 0.0 && sky.sun_elevation_degrees <= 90.0))
+        throw UsageError("environment '" + source + "': the sun's elevation must be 0-90 degrees");
+    if (!(sky.sun_cct >= 4000.0 && sky.sun_cct <= 25000.0))
+        throw UsageError("environment '" + source + "': CIE daylight is defined for 4000-25000 K");
+    return sky;
+}
+
+FloatCube make_environment(const std::string& source, int size) {
+    if (source == "studio") return tabulate(size, 2, studio_radiance);
+    if (source == "furnace") return tabulate(size, 1, [](const glm::dvec3&) { return glm::vec3(1.0f); });
+    if (source == "sky" || source.rfind("sky:", 0) == 0) return make_sky(parse_sky(source), size);
+    return from_files(source, size);
+}
+
+}  // namespace fxview::lighting

@@ -1,0 +1,28 @@
+// Where the scene's environment radiance comes from, tabulated as a float cube map in linear
+// Rec.709/sRGB primaries (scene-referred; 1 is the radiance that lights a white Lambertian surface to 1):
+//   studio            a neutral studio: three soft box lights over a grey floor gradient
+//   sky[:ELEV[,CCT]]  a clear daylight sky: the CIE standard clear sky (type 12) luminance
+//                     distribution, the sun at ELEV degrees (default 35) with the colour of CIE
+//                     daylight at CCT kelvin (default 5500), the sky dome the colour of 12000 K daylight
+//   furnace           uniform radiance 1 (the white-furnace test)
+//   FILE              an equirectangular .hdr/.exr (width twice the height), a cube cross image,
+//                     a cube-map .dds, or six face images F1,F2,...,F6 in the order +X -X +Y -Y +Z -Z
+// Errors (unknown name, unreadable file, wrong shape) throw fxview::Error naming the source.
+#pragma once
+#include <string>
+
+#include "lighting/cube_map.hpp"
+
+namespace fxview::lighting {
+
+FloatCube make_environment(const std::string& source, int size);
+
+// The procedural ones, for tests and the documentation.
+glm::vec3 studio_radiance(const glm::dvec3& direction);
+struct Sky {
+    double sun_elevation_degrees = 35.0;
+    double sun_cct = 5500.0;
+};
+Sky parse_sky(const std::string& source);  // "sky", "sky:ELEV" or "sky:ELEV,CCT"
+
+}  // namespace fxview::lighting

@@ -1,0 +1,46 @@
+// Image-based lighting by the split-sum approximation (Karis 2013), with the energy compensation
+// of multiple scattering (Fdez-Agüera 2019, as Filament uses it), for the metallic-roughness GGX model
+// of effects/lib/brdf.glsl: D = GGX with alpha = roughness², Smith-Schlick G with k = (roughness+1)²/8,
+// Schlick's Fresnel. GL-free; the GPU uploads these tables (render/environment_maps.hpp), the CPU
+// references read the same numbers.
+//   specular  the radiance convolved with the GGX lobe around the mirror direction (n = v = r),
+//             one cube mip level per roughness step k / (levels - 1), level 0 the radiance itself
+//   irradiance  order-2 spherical harmonics of the radiance, convolved with the clamped cosine
+//   dfg       per (n·v, roughness): A, B with ∫ f_ss cos = F0 A + B for Schlick's Fresnel
+#pragma once
+#include <array>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "lighting/cube_map.hpp"
+
+namespace fxview::lighting {
+
+struct PrefilteredEnvironment {
+    std::vector<FloatCube> specular;      // level k for roughness k / (levels - 1)
+    std::array<glm::vec3, 9> irradiance;  // SH coefficients of E(n) / pi, the cosine-convolved radiance
+};
+
+// `samples` GGX directions per texel (level 0 is copied).
+PrefilteredEnvironment prefilter(const FloatCube& radiance, int levels, int samples = 96);
+
+// E(n) / π for SH coefficients of prefilter(): the radiance a white Lambertian surface reflects.
+glm::dvec3 evaluate_irradiance(const std::array<glm::vec3, 9>& sh, const glm::dvec3& n);
+
+struct DfgTable {
+    int size = 0;                 // size x size texels: n·v = (i + ½) / size across, roughness = (j + ½) / size up
+    std::vector<glm::vec2> data;  // row j (roughness) first
+    // Bilinear with clamp to edge, as GL samples the texture.
+    glm::dvec2 lookup(double nv, double roughness) const;
+};
+DfgTable make_dfg_table(int size, int samples = 512);
+
+// The GGX half vector for uniform numbers u1, u2 and alpha (distribution of normals D(h) (n·h)).
+glm::dvec3 sample_ggx(double u1, double u2, double alpha);
+// Point i of n of the Hammersley set.
+glm::dvec2 hammersley(unsigned i, unsigned n);
+double smith_schlick(double cosine, double roughness);  // one side of G, k = (roughness + 1)² / 8
+double ggx_d(double nh, double alpha);
+
+}  // namespace fxview::lighting

@@ -1,0 +1,91 @@
+#include "render/environment_maps.hpp"
+
+#include <cstring>
+
+#include "gl/texture_upload.hpp"
+#include "lighting/environment_sources.hpp"
+
+namespace fxview::render {
+namespace {
+
+texture::Level float_level(int width, int height, const std::vector<float>& rgba) {
+    texture::Level level;
+    level.width = width;
+    level.height = height;
+    level.bytes.resize(rgba.size() * sizeof(float));
+    std::memcpy(level.bytes.data(), rgba.data(), level.bytes.size());
+    return level;
+}
+
+texture::Level cube_face_level(const lighting::FloatCube& cube, int face) {
+    std::vector<float> rgba;
+    rgba.reserve(static_cast<size_t>(cube.size) * cube.size * 4);
+    for (const glm::vec3& c : cube.faces[static_cast<size_t>(face)]) rgba.insert(rgba.end(), {c.r, c.g, c.b, 1.0f});
+    return float_level(cube.size, cube.size, rgba);
+}
+
+GpuTexture upload(const texture::TextureData& data, const std::string& source) {
+    GpuTexture gpu;
+    gpu.texture = gl::upload_texture(data, {false, false});
+    gpu.type = data.type;
+    gpu.format = data.format;
+    gpu.width = data.width();
+    gpu.height = data.height();
+    gpu.levels = data.levels();
+    gpu.source = source;
+    return gpu;
+}
+
+}  // namespace
+
+bool EnvironmentMaps::is_resource_name(const std::string& name) {
+    return name == "environment:specular" || name == "environment:irradiance" || name == "environment:dfg";
+}
+
+EnvironmentMaps::EnvironmentMaps(const std::string& source) : source_(source) {
+    if (source.empty()) {
+        prefiltered_.specular.assign(1, lighting::FloatCube(1));
+        prefiltered_.irradiance.fill(glm::vec3(0.0f));
+        dfg_.size = 1;
+        dfg_.data.assign(1, glm::vec2(0.0f));
+    } else {
+        prefiltered_ = lighting::prefilter(lighting::make_environment(source, kSize), kLevels);
+        dfg_ = lighting::make_dfg_table(kDfgSize);
+    }
+    specular_data_.type = texture::TextureType::Cube;
+    specular_data_.format = texture::PixelFormat::RGBA32F;
+    specular_data_.source = source.empty() ? "no environment" : source;
+    specular_data_.faces.resize(6);
+    for (int face = 0; face < 6; ++face)
+        for (const auto& level : prefiltered_.specular) specular_data_.faces[static_cast<size_t>(face)].push_back(cube_face_level(level, face));
+    specular_ = upload(specular_data_, specular_data_.source + " (prefiltered)");
+    for (size_t level = 0; level < prefiltered_.specular.size(); ++level) {
+        texture::TextureData one{texture::TextureType::Cube, texture::PixelFormat::RGBA32F, {}, specular_data_.source};
+        for (const auto& face : specular_data_.faces) one.faces.push_back({face[level]});
+        specular_levels_.push_back(std::move(one));
+    }
+
+    std::vector<float> sh;
+    for (const glm::vec3& c : prefiltered_.irradiance) sh.insert(sh.end(), {c.r, c.g, c.b, 1.0f});
+    texture::TextureData irradiance{texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(9, 1, sh)}}, specular_data_.source + " (SH irradiance)"};
+    irradiance_ = upload(irradiance, irradiance.source);
+
+    // Rows top first in TextureData; the table's row j (roughness (j + ½) / size) is GL row j from the bottom.
+    std::vector<float> table;
+    for (int j = dfg_.size - 1; j >= 0; --j)
+        for (int i = 0; i < dfg_.size; ++i) {
+            const glm::vec2 ab = dfg_.data[static_cast<size_t>(j) * dfg_.size + i];
+            table.insert(table.end(), {ab.x, ab.y, 0.0f, 1.0f});
+        }
+    texture::TextureData dfg{texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(dfg_.size, dfg_.size, table)}}, "split-sum DFG table"};
+    dfg_texture_ = upload(dfg, dfg.source);
+}
+
+const GpuTexture* EnvironmentMaps::texture(const std::string& name) const {
+    if (name == "environment:specular") return &specular_;
+    if (name == "environment:irradiance") return &irradiance_;
+    if (name == "environment:dfg") return &dfg_texture_;
+    return nullptr;
+}
+
+}  // namespace fxview::render

@@ -1,0 +1,47 @@
+// The scene environment on the GPU: the textures effects sample for image-based lighting, made
+// from lighting/ on the CPU and kept there too for the CPU references (docs/effect-format.md,
+// "Environment lighting"):
+//   environment:specular    cube map, RGBA32F, one mip level per roughness step (level 0 the radiance)
+//   environment:irradiance  9x1 RGBA32F: the order-2 SH coefficients of the cosine-convolved radiance / pi
+//   environment:dfg         2D RGBA32F: (A, B) of the split sum per (n·v, roughness), clamped at the edges
+// No source: black textures of one texel (an effect samples them and adds nothing).
+#pragma once
+#include <string>
+
+#include "lighting/image_based_lighting.hpp"
+#include "render/effect_resources.hpp"
+#include "texture/texture_data.hpp"
+
+namespace fxview::render {
+
+class EnvironmentMaps {
+public:
+    static constexpr int kSize = 256;    // texels across a face of the radiance (level 0)
+    static constexpr int kLevels = 6;    // roughness 0, 0.2, ..., 1 on levels 256 .. 8
+    static constexpr int kDfgSize = 64;
+
+    // Throws fxview::Error naming the source when it cannot be made.
+    explicit EnvironmentMaps(const std::string& source);
+
+    const std::string& source() const { return source_; }
+    bool empty() const { return source_.empty(); }
+    // The texture an "environment:..." ResourceName names; nullptr for an unknown name.
+    const GpuTexture* texture(const std::string& resource_name) const;
+    static bool is_resource_name(const std::string& name);
+
+    // The same numbers on the CPU.
+    const lighting::PrefilteredEnvironment& prefiltered() const { return prefiltered_; }
+    const lighting::DfgTable& dfg() const { return dfg_; }
+    const texture::TextureData& specular_data() const { return specular_data_; }  // faces[face][level], GL rows
+    const texture::TextureData& specular_level(int level) const { return specular_levels_.at(static_cast<size_t>(level)); }  // one level's six faces
+
+private:
+    std::string source_;
+    lighting::PrefilteredEnvironment prefiltered_;
+    lighting::DfgTable dfg_;
+    texture::TextureData specular_data_;
+    std::vector<texture::TextureData> specular_levels_;
+    GpuTexture specular_, irradiance_, dfg_texture_;
+};
+
+}  // namespace fxview::render
