@@ -1,0 +1,199 @@
+// Environment lighting: the CPU tables against integrals computed here by other means, the display
+// transforms, and the rendered results the issue asks for (white furnace, metal presets).
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "image/display_transform.hpp"
+#include "image/image_file.hpp"
+#include "lighting/cube_map.hpp"
+#include "lighting/environment_sources.hpp"
+#include "lighting/image_based_lighting.hpp"
+#include "texture/texture_file.hpp"
+#include "test_support.hpp"
+
+using namespace fxview;
+using fxview::test::Result;
+using fxview::test::run;
+using fxview::test::temp_path;
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+
+// ∫ f_ss cos over the hemisphere for F0 = 1 (GGX, Smith-Schlick), by a midpoint rule in (θ, φ):
+// no importance sampling, nothing shared with make_dfg_table but the BRDF's definition.
+double albedo_by_quadrature(double nv, double roughness) {
+    const double alpha = roughness * roughness;
+    const glm::dvec3 v(std::sqrt(1 - nv * nv), 0, nv);
+    const int n_theta = 600, n_phi = 300;
+    double sum = 0;
+    for (int i = 0; i < n_theta; ++i) {
+        const double theta = (i + 0.5) / n_theta * kPi / 2;
+        for (int j = 0; j < n_phi; ++j) {
+            const double phi = (j + 0.5) / n_phi * kPi;  // symmetric about the plane of incidence: half, doubled
+            const glm::dvec3 l(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+            const glm::dvec3 h = glm::normalize(l + v);
+            const double f = lighting::ggx_d(h.z, alpha) * lighting::smith_schlick(nv, roughness) * lighting::smith_schlick(l.z, roughness) /
+                             (4 * nv * l.z);
+            sum += 2 * f * l.z * std::sin(theta) * (kPi / 2 / n_theta) * (kPi / n_phi);
+        }
+    }
+    return sum;
+}
+
+// Mean display value (R, G, B) and the spread of luma inside the sphere's silhouette.
+struct Stats {
+    glm::dvec3 mean{0.0};
+    double luma_mean = 0, luma_sd = 0;
+};
+Stats sphere_stats(const std::string& png, double radius) {
+    const texture::TextureData t = texture::load_stb_image(png);
+    const int w = t.width(), h = t.height();
+    Stats s;
+    std::vector<double> lumas;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            if (std::hypot(x + 0.5 - w / 2.0, y + 0.5 - h / 2.0) > radius) continue;
+            const std::uint8_t* p = &t.faces[0][0].bytes[(static_cast<size_t>(y) * w + x) * 4];
+            const glm::dvec3 c(p[0] / 255.0, p[1] / 255.0, p[2] / 255.0);
+            s.mean += c;
+            lumas.push_back(0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b);
+        }
+    s.mean /= static_cast<double>(lumas.size());
+    for (double l : lumas) s.luma_mean += l / lumas.size();
+    for (double l : lumas) s.luma_sd += (l - s.luma_mean) * (l - s.luma_mean) / lumas.size();
+    s.luma_sd = std::sqrt(s.luma_sd);
+    return s;
+}
+}  // namespace
+
+TEST_CASE("a uniform environment prefilters to itself and its SH irradiance is exact") {
+    const lighting::FloatCube furnace = lighting::make_environment("furnace", 16);
+    const lighting::PrefilteredEnvironment p = lighting::prefilter(furnace, 4, 32);
+    for (const auto& level : p.specular)
+        for (const auto& face : level.faces)
+            for (const auto& texel : face) CHECK(texel.g == doctest::Approx(1.0).epsilon(1e-5));  // weights normalised: float rounding only
+    // The texel solid angles sum to 4π (exact formula), so L00 and with it E/π = 1 (float rounding of 1536 texels).
+    for (const glm::dvec3 n : {glm::dvec3(0, 1, 0), glm::dvec3(1, 0, 0), glm::normalize(glm::dvec3(1, -2, 3))})
+        CHECK(lighting::evaluate_irradiance(p.irradiance, n).g == doctest::Approx(1.0).epsilon(1e-5));
+}
+
+TEST_CASE("SH irradiance of a sky brightening towards the zenith matches the analytic integral") {
+    // L = max(y, 0): E(up)/π = ∫ cos² dω / π = 2/3, E(down) = 0.
+    lighting::FloatCube sky = lighting::tabulate(32, 2, [](const glm::dvec3& d) { return glm::vec3(static_cast<float>(std::max(d.y, 0.0))); });
+    const lighting::PrefilteredEnvironment p = lighting::prefilter(sky, 1);
+    // Order-2 SH irradiance is not exact for a clamped lighting; Ramamoorthi & Hanrahan (2001) bound its
+    // error at a few percent of the mean: allow 0.03 absolute against radiance of order 1.
+    CHECK(lighting::evaluate_irradiance(p.irradiance, {0, 1, 0}).g == doctest::Approx(2.0 / 3.0).epsilon(0.045));
+    CHECK(std::abs(lighting::evaluate_irradiance(p.irradiance, {0, -1, 0}).g) < 0.03);
+    // Horizontal n = x: ∫ max(y, 0) max(x, 0) dω by a midpoint rule over the sphere (10 %: order-2 SH
+    // rings most where the lighting's edge, the horizon, faces the normal).
+    double e = 0;
+    const int n = 400;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < 2 * n; ++j) {
+            const double theta = (i + 0.5) / n * kPi, phi = (j + 0.5) / (2 * n) * 2 * kPi;
+            const glm::dvec3 d(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+            e += std::max(d.y, 0.0) * std::max(d.x, 0.0) * std::sin(theta) * (kPi / n) * (kPi / n);
+        }
+    CHECK(lighting::evaluate_irradiance(p.irradiance, {1, 0, 0}).g == doctest::Approx(e / kPi).epsilon(0.1));
+}
+
+TEST_CASE("the DFG table's directional albedo matches a quadrature of the BRDF; it never exceeds 1") {
+    const lighting::DfgTable table = lighting::make_dfg_table(32, 1024);
+    for (const glm::dvec2 a : table.data) CHECK(a.x + a.y <= 1.0 + 1e-6);
+    for (const double nv : {0.2, 0.5, 0.9})
+        for (const double r : {0.3, 0.6, 1.0}) {
+            CAPTURE(nv);
+            CAPTURE(r);
+            const glm::dvec2 ab = table.lookup(nv, r);
+            // 1024 Hammersley samples and bilinear lookup between texels 1/32 apart: 1 % of the albedo.
+            CHECK(ab.x + ab.y == doctest::Approx(albedo_by_quadrature(nv, r)).epsilon(0.01));
+        }
+}
+
+TEST_CASE("display transforms: none clamps, PBR Neutral keeps dark colours' hue, exposure doubles per stop") {
+    using image::ToneMap;
+    CHECK(image::display_transform({0.25f, 0.5f, 2.0f}, {}).z == 1.0f);
+    CHECK(image::display_transform({0.25f, 0.5f, 0.1f}, {1.0f, ToneMap::None}).y == doctest::Approx(1.0f));
+    // Khronos PBR Neutral: below the compression start (0.76) only the 0.04 toe offset applies.
+    const glm::vec3 neutral = image::display_transform({0.5f, 0.3f, 0.2f}, {0.0f, ToneMap::PbrNeutral});
+    CHECK(neutral.x == doctest::Approx(0.46f));
+    CHECK(neutral.y == doctest::Approx(0.26f));
+    for (const ToneMap t : {ToneMap::Aces, ToneMap::PbrNeutral}) {
+        float previous = 0.0f;
+        for (float v = 0.0f; v < 100.0f; v = v * 1.5f + 0.01f) {  // monotonic, below 1
+            const float shown = image::display_transform(glm::vec3(v), {0.0f, t}).g;
+            CHECK(shown >= previous);
+            CHECK(shown <= 1.0f);
+            previous = shown;
+        }
+    }
+    CHECK_THROWS(image::parse_tone_map("filmic"));
+}
+
+TEST_CASE("white furnace: a white metal under uniform light reflects 1 within 2 % at every roughness, never more") {
+    for (const double roughness : {0.1, 0.3, 0.5, 0.7, 1.0}) {
+        const std::string out = temp_path("furnace.exr");
+        const Result r = run("render " + std::string(FXVIEW_SOURCE_EFFECTS_DIR) +
+                             "/brdf/analytic.fx -t PBR --set BaseColor=1,1,1 --set Metallic=1 --set LightIrradiance=0 --set Roughness=" +
+                             std::to_string(roughness) + " --environment furnace --size 64x64 --out " + out);
+        REQUIRE(r.exit_code == 0);
+        const image::FloatImage image = image::read_float_image(out);
+        double sum = 0, most = 0;
+        int count = 0;
+        for (int y = 0; y < 64; ++y)
+            for (int x = 0; x < 64; ++x)
+                if (std::hypot(x + 0.5 - 32, y + 0.5 - 32) < 24) {  // inside the silhouette (radius ~27 px)
+                    sum += image.pixel(x, y)[1];
+                    most = std::max<double>(most, image.pixel(x, y)[1]);
+                    ++count;
+                }
+        CAPTURE(roughness);
+        CHECK(sum / count == doctest::Approx(1.0).epsilon(0.02));
+        CHECK(most <= 1.0 + 1e-4);  // float rounding of the compensation
+    }
+}
+
+TEST_CASE("metal presets look like their metal: hue order, mid-grey luminance, reflected structure") {
+    struct Metal {
+        const char* name;
+        bool warm;  // R > G > B with a clear gap (gold, copper); else near neutral
+    };
+    for (const Metal m : {Metal{"gold", true}, Metal{"copper", true}, Metal{"silver", false}, Metal{"aluminium", false}, Metal{"titanium", false}}) {
+        const std::string out = temp_path(std::string(m.name) + ".png");
+        const Result r = run("render " + std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/analytic.fx --preset " + FXVIEW_SOURCE_EFFECTS_DIR +
+                             "/brdf/presets/" + m.name + ".json --mesh sphere --size 128x128 --out " + out);
+        REQUIRE(r.exit_code == 0);
+        const Stats s = sphere_stats(out, 48.0);  // the sphere's silhouette has a radius of ~55 px
+        CAPTURE(m.name);
+        CAPTURE(s.mean.r);
+        CAPTURE(s.mean.g);
+        CAPTURE(s.mean.b);
+        CAPTURE(s.luma_sd);
+        CHECK(s.luma_mean > 0.2);
+        CHECK(s.luma_mean < 0.8);
+        CHECK(s.luma_sd > 0.05);  // a flat shade would be ~0; soft boxes and the floor reflect
+        if (m.warm) {
+            CHECK(s.mean.r > s.mean.g + 0.05);
+            CHECK(s.mean.g > s.mean.b + 0.05);
+        } else {
+            CHECK(std::abs(s.mean.r - s.mean.b) < 0.08);
+        }
+    }
+}
+
+TEST_CASE("bad environments: unknown names and files exit non-zero naming them") {
+    const std::string analytic = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/analytic.fx";
+    const Result missing = run("render " + analytic + " --environment /no/such/sky.hdr --size 16x16 --out " + temp_path("x.png"));
+    CHECK(missing.exit_code != 0);
+    CHECK(missing.err.find("/no/such/sky.hdr") != std::string::npos);
+    const Result sky = run("render " + analytic + " --environment sky:95 --size 16x16 --out " + temp_path("x.png"));
+    CHECK(sky.exit_code != 0);
+    CHECK(sky.err.find("0-90") != std::string::npos);
+    const Result tone = run("render " + analytic + " --tone-map filmic --size 16x16 --out " + temp_path("x.png"));
+    CHECK(tone.exit_code != 0);
+    CHECK(tone.err.find("pbr-neutral") != std::string::npos);
+}
