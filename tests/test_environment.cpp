@@ -70,7 +70,7 @@ Stats sphere_stats(const std::string& png, double radius) {
 }  // namespace
 
 TEST_CASE("a uniform environment prefilters to itself and its SH irradiance is exact") {
-    const lighting::FloatCube furnace = lighting::make_environment("furnace", 16);
+    const lighting::Environment furnace = lighting::make_environment("furnace", 16);
     const lighting::PrefilteredEnvironment p = lighting::prefilter(furnace, 4, 32);
     for (const auto& level : p.specular)
         for (const auto& face : level.faces)
@@ -82,7 +82,7 @@ TEST_CASE("a uniform environment prefilters to itself and its SH irradiance is e
 
 TEST_CASE("SH irradiance of a sky brightening towards the zenith matches the analytic integral") {
     // L = max(y, 0): E(up)/π = ∫ cos² dω / π = 2/3, E(down) = 0.
-    lighting::FloatCube sky = lighting::tabulate(32, 2, [](const glm::dvec3& d) { return glm::vec3(static_cast<float>(std::max(d.y, 0.0))); });
+    const lighting::Environment sky{lighting::tabulate(32, 2, [](const glm::dvec3& d) { return glm::vec3(static_cast<float>(std::max(d.y, 0.0))); }), {}};
     const lighting::PrefilteredEnvironment p = lighting::prefilter(sky, 1);
     // Order-2 SH irradiance is not exact for a clamped lighting; Ramamoorthi & Hanrahan (2001) bound its
     // error at a few percent of the mean: allow 0.03 absolute against radiance of order 1.

@@ -344,3 +344,31 @@ TEST_CASE("the BRDF tab plots a .brdf file and its check runs by script; an effe
     CHECK(refused.exit_code != 0);
     CHECK(refused.err.find("no BRDF grid") != std::string::npos);
 }
+
+TEST_CASE("the viewer lights and shows the environment as render does, through the same display transform; a bad one keeps the last good") {
+    const std::string effect = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/analytic.fx";
+    const std::string preset = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/presets/gold.json";
+    const std::string shot = temp_path("env-view.png"), rendered = temp_path("env-render.png"), after = temp_path("env-after.png");
+    const std::string script = temp_path("env-script.txt");
+    // The preset asks for the studio, PBR Neutral and 4x MSAA; a missing file is named and changes nothing.
+    std::ofstream(script) << "render-screenshot " << shot << "\nenvironment /no/such/place.hdr\nrender-screenshot " << after << "\n";
+    const Result r = run("view " + effect + " --preset " + preset + " --size 64x64 --script " + script + " --frames 2");
+    CAPTURE(r.err);
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("/no/such/place.hdr") != std::string::npos);
+    REQUIRE(run("render " + effect + " --preset " + preset + " --size 64x64 --out " + rendered).exit_code == 0);
+    const auto view = load_png(shot), render = load_png(rendered), kept = load_png(after);
+    // Same scene, environment, MSAA and display transform: the same 8-bit pixels up to one code value
+    // (the two multisample resolves may round differently at edges), object and background alike.
+    for (const auto& [x, y] : {std::pair{32, 32}, std::pair{20, 24}, std::pair{44, 40}, std::pair{2, 2}, std::pair{60, 5}})
+        for (int c = 0; c < 3; ++c) {
+            CHECK(std::abs(texel(view, x, y)[c] - texel(render, x, y)[c]) <= 1.0f / 255.0f + 1e-6f);
+            CHECK(texel(kept, x, y)[c] == texel(view, x, y)[c]);
+        }
+    CHECK(texel(view, 32, 32)[0] > texel(view, 32, 32)[2] + 0.1f);  // gold, not grey
+    CHECK(texel(view, 2, 2)[1] > 0.2f);                               // the studio behind it, not black
+    // Exposure by script brightens the picture by the transform's rule.
+    std::ofstream(script) << "exposure 1\nrender-screenshot " << after << "\n";
+    REQUIRE(run("view " + effect + " --preset " + preset + " --size 64x64 --script " + script + " --frames 2").exit_code == 0);
+    CHECK(texel(load_png(after), 2, 2)[1] > texel(view, 2, 2)[1] + 0.05f);
+}

@@ -49,7 +49,7 @@ double clear_sky(double z, double chi) {
     return gradation * indicatrix;
 }
 
-FloatCube make_sky(const Sky& sky, int size) {
+Environment make_sky(const Sky& sky, int size) {
     const double el = sky.sun_elevation_degrees * kPi / 180.0;
     // The sun on the default camera's side (+Z), 40 degrees to its left: objects are front-lit.
     const double azimuth = -40.0 * kPi / 180.0;
@@ -71,13 +71,14 @@ FloatCube make_sky(const Sky& sky, int size) {
     const double total = sun_horizontal * 1.25;                   // sun + a quarter of it from the sky
     const double sun_scale = kPi / total, sky_scale = 0.25 * sun_horizontal * kPi / total / sky_horizontal;
     const double ground_radiance = 0.2 * 1.0;                     // a grey ground of albedo 0.2 under irradiance pi
-    return tabulate(size, 2, [&](const glm::dvec3& d) {
+    Environment environment;
+    environment.radiance = tabulate(size, 2, [&](const glm::dvec3& d) {
         if (d.y < 0.0) return glm::vec3(ground_radiance * glm::mix(sun_colour, sky_colour, 0.2));
         const double chi = std::acos(std::clamp(glm::dot(d, sun), -1.0, 1.0));
-        glm::dvec3 radiance = sky_scale * clear_sky(std::acos(std::clamp(d.y, 0.0, 1.0)), chi) * sky_colour;
-        if (chi < sun_radius) radiance += sun_scale / sun_solid_angle * sun_colour;
-        return glm::vec3(radiance);
+        return glm::vec3(sky_scale * clear_sky(std::acos(std::clamp(d.y, 0.0, 1.0)), chi) * sky_colour);
     });
+    environment.discs.push_back({sun, sun_radius, sun_scale / sun_solid_angle * sun_colour});
+    return environment;
 }
 
 // An equirectangular image (-Z at its centre, +Y at the top) resampled onto the cube.
@@ -153,6 +154,31 @@ FloatCube from_files(const std::string& source, int size) {
 
 }  // namespace
 
+double DiscLight::solid_angle() const { return 2.0 * kPi * (1.0 - std::cos(angular_radius)); }
+
+FloatCube Environment::radiance_with_discs() const {
+    if (discs.empty()) return radiance;
+    FloatCube out = radiance;
+    const int n = 4;  // n x n taps per texel near a disc's edge
+    for (int face = 0; face < 6; ++face)
+        for (int y = 0; y < out.size; ++y)
+            for (int x = 0; x < out.size; ++x) {
+                const glm::dvec3 centre = texel_direction(face, x, y, out.size);
+                for (const DiscLight& disc : discs) {
+                    // Texels farther than the disc plus a texel's diagonal cannot touch it.
+                    if (std::acos(std::clamp(glm::dot(centre, disc.direction), -1.0, 1.0)) > disc.angular_radius + 3.0 / out.size) continue;
+                    int inside = 0;
+                    for (int b = 0; b < n; ++b)
+                        for (int a = 0; a < n; ++a) {
+                            const glm::dvec3 d = glm::normalize(cube_direction(face, (x + (a + 0.5) / n) / out.size, (y + (b + 0.5) / n) / out.size));
+                            inside += glm::dot(d, disc.direction) > std::cos(disc.angular_radius);
+                        }
+                    out.at(face, x, y) += glm::vec3(disc.radiance * (static_cast<double>(inside) / (n * n)));
+                }
+            }
+    return out;
+}
+
 glm::vec3 studio_radiance(const glm::dvec3& d) {
     // Walls and ceiling a dim neutral grey, brighter overhead; the floor darker towards the nadir.
     double base = d.y >= 0.0 ? 0.25 + 0.15 * d.y : 0.2 * (1.0 + d.y) + 0.04;
@@ -180,11 +206,11 @@ Sky parse_sky(const std::string& source) {
     return sky;
 }
 
-FloatCube make_environment(const std::string& source, int size) {
-    if (source == "studio") return tabulate(size, 2, studio_radiance);
-    if (source == "furnace") return tabulate(size, 1, [](const glm::dvec3&) { return glm::vec3(1.0f); });
+Environment make_environment(const std::string& source, int size) {
+    if (source == "studio") return {tabulate(size, 2, studio_radiance), {}};
+    if (source == "furnace") return {tabulate(size, 1, [](const glm::dvec3&) { return glm::vec3(1.0f); }), {}};
     if (source == "sky" || source.rfind("sky:", 0) == 0) return make_sky(parse_sky(source), size);
-    return from_files(source, size);
+    return {from_files(source, size), {}};
 }
 
 }  // namespace fxview::lighting

@@ -10,12 +10,29 @@
 // Errors (unknown name, unreadable file, wrong shape) throw fxview::Error naming the source.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "lighting/cube_map.hpp"
 
 namespace fxview::lighting {
 
-FloatCube make_environment(const std::string& source, int size);
+// A small bright disc (the sun) kept apart from the tabulated radiance: integrated in closed form
+// where the radiance is convolved, so that it does not show as blotches of too few samples.
+struct DiscLight {
+    glm::dvec3 direction{0.0, 1.0, 0.0};  // unit, towards the light
+    double angular_radius = 0.0;          // radians
+    glm::dvec3 radiance{0.0};             // uniform over the disc
+    double solid_angle() const;
+};
+
+struct Environment {
+    FloatCube radiance;             // without the discs
+    std::vector<DiscLight> discs;
+    // The radiance with the discs drawn in (supersampled per texel): the background and the mirror.
+    FloatCube radiance_with_discs() const;
+};
+
+Environment make_environment(const std::string& source, int size);
 
 // The procedural ones, for tests and the documentation.
 glm::vec3 studio_radiance(const glm::dvec3& direction);

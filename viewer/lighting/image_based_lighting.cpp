@@ -66,15 +66,20 @@ double smith_schlick(double cosine, double roughness) {
     return cosine / (cosine * (1.0 - k) + k);
 }
 
-PrefilteredEnvironment prefilter(const FloatCube& radiance, int levels, int samples) {
+PrefilteredEnvironment prefilter(const Environment& environment, int levels, int samples) {
     PrefilteredEnvironment out;
+    const FloatCube& radiance = environment.radiance;
     std::vector<FloatCube> chain{radiance};
     while (chain.back().size > 1) chain.push_back(downsample(chain.back()));
-    out.specular.push_back(radiance);
+    const FloatCube full = environment.radiance_with_discs();
+    out.specular.push_back(full);
     const double texel_angle = 4.0 * kPi / (6.0 * radiance.size * radiance.size);
     for (int level = 1; level < levels; ++level) {
         const double roughness = static_cast<double>(level) / (levels - 1), alpha = roughness * roughness;
         FloatCube cube(std::max(1, radiance.size >> level));
+        // The narrowest lobe needs few directions; wider ones many, or a bright small source (the sun)
+        // shows as blotches where the same directions of neighbouring texels catch it.
+        const int count = level == 1 ? samples : samples * 4;
         std::vector<std::jthread> workers;
         for (int face = 0; face < 6; ++face)
             workers.emplace_back([&, face] {
@@ -85,8 +90,8 @@ PrefilteredEnvironment prefilter(const FloatCube& radiance, int levels, int samp
                         frame(n, t, b);
                         glm::dvec3 sum(0.0);
                         double weight = 0.0;
-                        for (int i = 0; i < samples; ++i) {
-                            const glm::dvec2 u = hammersley(static_cast<unsigned>(i), static_cast<unsigned>(samples));
+                        for (int i = 0; i < count; ++i) {
+                            const glm::dvec2 u = hammersley(static_cast<unsigned>(i), static_cast<unsigned>(count));
                             const glm::dvec3 hl = sample_ggx(u.x, u.y, alpha);
                             const glm::dvec3 h = hl.x * t + hl.y * b + hl.z * n;
                             const glm::dvec3 l = 2.0 * glm::dot(n, h) * h - n;
@@ -94,17 +99,36 @@ PrefilteredEnvironment prefilter(const FloatCube& radiance, int levels, int samp
                             if (nl <= 0.0) continue;
                             // Filtered importance sampling: read the mip whose texels cover this sample's share of the lobe.
                             const double pdf = ggx_d(hl.z, alpha) / 4.0;
-                            const double lod = 0.5 * std::log2(1.0 / (samples * pdf * texel_angle)) + 1.0;
+                            const double lod = 0.5 * std::log2(1.0 / (count * pdf * texel_angle)) + 1.0;
                             sum += nl * glm::dvec3(sample_lod(chain, l, lod));
                             weight += nl;
                         }
-                        cube.at(face, x, y) = glm::vec3(weight > 0 ? sum / weight : sum);
+                        // A disc: ∫ L w dl / ∫ w dl with w = D(h)/4 (n·l), the sampled directions' density times n·l
+                        // (n = v = r), whose total the samples estimate as weight / count; w over the
+                        // disc by 19 points (centre and two rings).
+                        glm::dvec3 discs(0.0);
+                        for (const DiscLight& disc : environment.discs) {
+                            glm::dvec3 dt, db;
+                            frame(disc.direction, dt, db);
+                            double w = 0.0;
+                            for (int k = 0; k < 19; ++k) {
+                                const double ring = k == 0 ? 0.0 : k <= 6 ? 0.45 : 0.85, angle = 2 * kPi * (k % 12) / (k <= 6 ? 6.0 : 12.0);
+                                const glm::dvec3 l = glm::normalize(disc.direction + std::tan(ring * disc.angular_radius) *
+                                                                                         (std::cos(angle) * dt + std::sin(angle) * db));
+                                const double nl = glm::dot(n, l);
+                                if (nl > 0.0) w += ggx_d(glm::dot(n, glm::normalize(n + l)), alpha) / 4.0 * nl / 19.0;
+                            }
+                            discs += disc.radiance * disc.solid_angle() * w;
+                        }
+                        const double total = weight / count;
+                        cube.at(face, x, y) = glm::vec3(weight > 0 ? sum / weight + discs / total : sum);
                     }
             });
         workers.clear();
         out.specular.push_back(std::move(cube));
     }
-    // SH projection with exact texel solid angles, then the cosine convolution (Ramamoorthi-Hanrahan).
+    // SH projection with exact texel solid angles (discs in closed form), then the cosine convolution
+    // (Ramamoorthi-Hanrahan).
     std::array<glm::dvec3, 9> projection{};
     for (int face = 0; face < 6; ++face)
         for (int y = 0; y < radiance.size; ++y)
@@ -113,6 +137,10 @@ PrefilteredEnvironment prefilter(const FloatCube& radiance, int levels, int samp
                 const double omega = texel_solid_angle(x, y, radiance.size);
                 for (size_t k = 0; k < 9; ++k) projection[k] += basis[k] * omega * glm::dvec3(radiance.at(face, x, y));
             }
+    for (const DiscLight& disc : environment.discs) {
+        const std::array<double, 9> basis = sh_basis(disc.direction);
+        for (size_t k = 0; k < 9; ++k) projection[k] += basis[k] * disc.solid_angle() * disc.radiance;
+    }
     const double band[9] = {kPi, 2 * kPi / 3, 2 * kPi / 3, 2 * kPi / 3, kPi / 4, kPi / 4, kPi / 4, kPi / 4, kPi / 4};
     for (size_t k = 0; k < 9; ++k) out.irradiance[k] = glm::vec3(projection[k] * band[k] / kPi);
     return out;

@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "lighting/cube_map.hpp"
+#include "lighting/environment_sources.hpp"
 
 namespace fxview::lighting {
 
@@ -22,8 +23,9 @@ struct PrefilteredEnvironment {
     std::array<glm::vec3, 9> irradiance;  // SH coefficients of E(n) / pi, the cosine-convolved radiance
 };
 
-// `samples` GGX directions per texel (level 0 is copied).
-PrefilteredEnvironment prefilter(const FloatCube& radiance, int levels, int samples = 96);
+// `samples` GGX directions per texel of level 1, four times as many on wider lobes (level 0 is the
+// radiance with the discs drawn in); the discs are added to every other level in closed form.
+PrefilteredEnvironment prefilter(const Environment& environment, int levels, int samples = 128);
 
 // E(n) / π for SH coefficients of prefilter(): the radiance a white Lambertian surface reflects.
 glm::dvec3 evaluate_irradiance(const std::array<glm::vec3, 9>& sh, const glm::dvec3& n);

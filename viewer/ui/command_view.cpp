@@ -34,6 +34,7 @@ app::CommandRunner add_view_command(CLI::App& app) {
         const auto given = [command](const char* name) { return command->get_option(name)->count() > 0; };
         if (given("--backend")) throw UsageError("view: --backend does not apply: the viewer always opens a GLFW window");
         o->scene.backend = "glfw";
+        o->scene.samples = 4;  // the viewer's default MSAA (a preset's or --samples wins)
         const app::RenderRequest request = app::to_render_request(o->scene);
         ViewerOptions options;
         options.effect_path = request.effect.path;
@@ -57,6 +58,7 @@ app::CommandRunner add_view_command(CLI::App& app) {
         if (request.samples != 0 && request.samples != 2 && request.samples != 4 && request.samples != 8)
             throw UsageError("view: --samples must be 0, 2, 4 or 8 (the viewer's MSAA choices)");
         options.samples = request.samples;
+        options.display = request.display;
         if (given("--debug-view")) options.debug_view = o->scene.debug_view;
         options.frames = o->frames;
         options.ui_scale = o->ui_scale;

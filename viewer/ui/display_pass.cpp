@@ -3,24 +3,28 @@
 #include <string>
 
 #include "gl/program.hpp"
+#include "image/display_transform.hpp"
 #include "ui/ui_shaders.hpp"
 
 namespace fxview::ui {
 
 namespace {
 
-// Blends over a dark grey so that uncovered (alpha 0) pixels read as background, then encodes.
+// Blends over a dark grey so that uncovered (alpha 0) pixels read as background, applies exposure and
+// the tone mapper (image/display_transform.hpp), then encodes.
 const std::string kFragment = std::string(R"(#version 450 core
 in vec2 uv;
 uniform sampler2D u_source;
 uniform bool u_srgb;
 uniform float u_backdrop;
+uniform float u_exposure;
+uniform int u_tone_map;
 layout(location = 0) out vec4 color;
-)") + kSrgbEncodeGlsl + R"(
+)") + kSrgbEncodeGlsl + image::kDisplayTransformGlsl + R"(
 void main() {
     vec4 linear = texelFetch(u_source, ivec2(gl_FragCoord.xy), 0);
-    vec3 shown = mix(vec3(u_backdrop), linear.rgb, clamp(linear.a, 0.0, 1.0));
-    color = vec4(u_srgb ? encode(shown) : clamp(shown, 0.0, 1.0), 1.0);
+    vec3 shown = display_transform(mix(vec3(u_backdrop), linear.rgb, clamp(linear.a, 0.0, 1.0)), u_exposure, u_tone_map);
+    color = vec4(u_srgb ? encode(shown) : shown, 1.0);
 })";
 
 }  // namespace
@@ -29,7 +33,7 @@ DisplayPass::DisplayPass()
     : program_(gl::link_program({{GL_VERTEX_SHADER, kFullscreenVertexShader, "display pass"}, {GL_FRAGMENT_SHADER, kFragment, "display pass"}})),
       vertex_array_(gl::create_vertex_array()) {}
 
-void DisplayPass::run(GLuint source, int width, int height, bool srgb) {
+void DisplayPass::run(GLuint source, int width, int height, bool srgb, const image::DisplaySettings& display) {
     if (width != width_ || height != height_) {
         texture_ = gl::create_texture(GL_TEXTURE_2D);
         glTextureStorage2D(texture_.get(), 1, GL_RGBA8, width, height);
@@ -50,6 +54,8 @@ void DisplayPass::run(GLuint source, int width, int height, bool srgb) {
     glProgramUniform1i(program_.get(), glGetUniformLocation(program_.get(), "u_source"), 0);
     glProgramUniform1i(program_.get(), glGetUniformLocation(program_.get(), "u_srgb"), srgb ? 1 : 0);
     glProgramUniform1f(program_.get(), glGetUniformLocation(program_.get(), "u_backdrop"), kDisplayBackdrop);
+    glProgramUniform1f(program_.get(), glGetUniformLocation(program_.get(), "u_exposure"), display.exposure_ev);
+    glProgramUniform1i(program_.get(), glGetUniformLocation(program_.get(), "u_tone_map"), static_cast<int>(display.tone_map));
     glBindVertexArray(vertex_array_.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

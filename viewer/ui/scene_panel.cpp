@@ -82,6 +82,7 @@ void ViewerScene::add_to(StateHash& h) const {
     const glm::vec3 light = scene.light.world_position();
     h.add(light.x).add(light.y).add(light.z).add(scene.light.color.r).add(scene.light.color.g).add(scene.light.color.b).add(scene.light.intensity);
     h.add(scene.background.r).add(scene.background.g).add(scene.background.b).add(scene.background.a);
+    h.add(scene.environment.source).add(scene.environment.rotation_degrees).add(scene.environment.intensity);
     for (const auto& o : objects) {
         const auto& p = o.object.pose;
         h.add(o.object.mesh).add(p.position.x).add(p.position.y).add(p.position.z);

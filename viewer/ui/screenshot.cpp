@@ -34,13 +34,15 @@ void write_window_png(const std::string& path, int width, int height) {
     image::write_image(path, shot, image::Encoding::Linear);
 }
 
-void write_picture(const std::string& path, image::FloatImage picture, bool srgb_display, bool transparent) {
+void write_picture(const std::string& path, image::FloatImage picture, bool srgb_display, bool transparent, const image::DisplaySettings& display) {
     if (!transparent)
         for (size_t i = 0; i + 3 < picture.data.size(); i += 4) {
             const float alpha = std::clamp(picture.data[i + 3], 0.0f, 1.0f);
             for (size_t c = 0; c < 3; ++c) picture.data[i + c] = kDisplayBackdrop + (picture.data[i + c] - kDisplayBackdrop) * alpha;
             picture.data[i + 3] = 1.0f;
         }
+    // PNG through the window's display transform; EXR and PFM keep scene-linear values.
+    if (std::filesystem::path(path).extension() == ".png") image::apply_display_transform(picture, display);
     create_parent(path);
     image::write_image(path, picture, srgb_display ? image::Encoding::Srgb : image::Encoding::Linear);
 }

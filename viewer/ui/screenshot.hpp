@@ -4,6 +4,7 @@
 #pragma once
 #include <string>
 
+#include "image/display_transform.hpp"
 #include "image/image.hpp"
 
 namespace fxview::ui {
@@ -12,6 +13,6 @@ namespace fxview::ui {
 void write_window_png(const std::string& path, int width, int height);
 
 // A linear picture as the view shows it: composited over the view's backdrop unless `transparent`.
-void write_picture(const std::string& path, image::FloatImage picture, bool srgb_display, bool transparent);
+void write_picture(const std::string& path, image::FloatImage picture, bool srgb_display, bool transparent, const image::DisplaySettings& display);
 
 }  // namespace fxview::ui

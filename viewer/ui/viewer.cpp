@@ -25,6 +25,7 @@
 #include "render/skybox.hpp"
 #include "scene/shapes.hpp"
 #include "ui/display_pass.hpp"
+#include "ui/environment_panel.hpp"
 #include "ui/effect_state.hpp"
 #include "ui/error_list.hpp"
 #include "app/brdf_evaluation.hpp"
@@ -70,7 +71,10 @@ public:
         if (!options.debug_view.empty())
             for (auto& o : view_.objects) o.view = parse_view(options.debug_view);
         samples_ = options.samples;
+        display_settings_ = options.display;
         script_ = options.script;
+        // A bad --environment is an error of the command line, not of a frame.
+        if (session() && !view_.scene.environment.source.empty()) session()->environment(view_.scene.environment);
     }
 
     int run() {
@@ -164,7 +168,17 @@ private:
                 effect_.set_error(error.what());
             }
         }
-        if (sky) skybox_->draw(sky->texture.get(), view_.scene.camera, target);
+        if (sky) {
+            skybox_->draw(sky->texture.get(), view_.scene.camera, target);
+        } else if (session() && !view_.scene.environment.source.empty()) {
+            try {  // the scene's environment as background
+                const render::EnvironmentMaps& environment = session()->environment(view_.scene.environment);
+                skybox_->draw(environment.texture("environment:specular")->texture.get(), view_.scene.camera, target,
+                              {view_.scene.environment.world_to_environment(), view_.scene.environment.intensity, true});
+            } catch (const std::exception& error) {
+                effect_.set_error(error.what());
+            }
+        }
         target.resolve();
     }
 
@@ -259,7 +273,11 @@ private:
                 const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 schedule_.done(work, seconds);
                 render_seconds_.push_back(seconds);
-                display_->run(target_->color_texture(0), width, height, srgb_display_);
+                display_->run(target_->color_texture(0), width, height, srgb_display_, display_settings_);
+                displayed_settings_ = display_settings_;
+            } else if (displayed_settings_.exposure_ev != display_settings_.exposure_ev || displayed_settings_.tone_map != display_settings_.tone_map) {
+                display_->run(target_->color_texture(0), width, height, srgb_display_, display_settings_);  // no new render needed
+                displayed_settings_ = display_settings_;
             }
         }
         imgui_->begin_frame();
@@ -280,13 +298,13 @@ private:
     }
 
     // The render view's picture as rendered (linear values, alpha kept).
-    void write_render(const std::string& path) { write_picture(path, target_->read_color(0), srgb_display_, true); }
+    void write_render(const std::string& path) { write_picture(path, target_->read_color(0), srgb_display_, true, display_settings_); }
 
     // What the view shows, at any size (screenshot.hpp).
     void screenshot_at(const std::string& path, int width, int height) {
         gl::RenderTarget shot({width, height, 1, samples_});
         render_scene(shot);
-        write_picture(path, shot.read_color(0), srgb_display_, transparent_shots_);
+        write_picture(path, shot.read_color(0), srgb_display_, transparent_shots_, display_settings_);
         status_ = "saved " + path;
     }
 
@@ -382,6 +400,7 @@ private:
             }
             if (ImGui::BeginTabItem("Scene", nullptr, tab_flags("Scene"))) {
                 draw_scene_panel(view_, session() ? session()->technique() : "", session() != nullptr, status_);
+                environment_panel_.draw(view_.scene.environment, session());
                 ImGui::EndTabItem();
             }
             if (ImGui::BeginTabItem("Textures", nullptr, tab_flags("Textures"))) {
@@ -543,6 +562,12 @@ private:
         const char* sample_counts[] = {"off", "2", "4", "8"};
         int msaa = samples_ == 0 ? 0 : samples_ == 2 ? 1 : samples_ == 4 ? 2 : 3;
         if (ImGui::Combo("MSAA", &msaa, sample_counts, 4)) samples_ = msaa == 0 ? 0 : 1 << msaa;
+        ImGui::SliderFloat("exposure", &display_settings_.exposure_ev, -10.0f, 10.0f, "%+.1f EV");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Scales the picture by 2^EV before tone mapping (the view and PNG screenshots; EXR stays linear)");
+        const char* tone_maps[] = {"none (clip)", "ACES filmic (Hill's fit)", "Khronos PBR Neutral"};
+        int tone_map = static_cast<int>(display_settings_.tone_map);
+        if (ImGui::Combo("tone mapping", &tone_map, tone_maps, 3)) display_settings_.tone_map = static_cast<image::ToneMap>(tone_map);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("PBR Neutral keeps base colours below 0.8 as they are and compresses highlights");
         if (ImGui::Button("Fullscreen (F11)")) toggle_fullscreen();
         ImGui::Separator();
         ImGui::InputInt2("screenshot size", &shot_size_.x);
@@ -663,6 +688,12 @@ private:
             std::cout << nlohmann::json{{"brdf_measured", args[0]}}.dump() << std::endl;
             requested_tab_ = "BRDF";
             wait_frames_ = 1;
+        } else if (a.verb == "environment") {  // as the Scene tab's environment controls
+            EnvironmentPanel::apply(view_.scene.environment, args[0], session());
+        } else if (a.verb == "exposure") {
+            display_settings_.exposure_ev = std::stof(args[0]);
+        } else if (a.verb == "tone-map") {
+            display_settings_.tone_map = image::parse_tone_map(args[0]);
         } else if (a.verb == "brdf-view") {  // as the BRDF tab's View combo
             static const std::map<std::string, BrdfPanel::View> views = {
                 {"polar", BrdfPanel::View::Polar}, {"lobe", BrdfPanel::View::Lobe}, {"slice", BrdfPanel::View::Slice}, {"sphere", BrdfPanel::View::Sphere}};
@@ -756,6 +787,8 @@ private:
     std::unique_ptr<DisplayPass> display_;
     std::unique_ptr<render::DebugRenderer> debug_;
     std::unique_ptr<render::Skybox> skybox_;
+    EnvironmentPanel environment_panel_;
+    image::DisplaySettings display_settings_, displayed_settings_;
     std::string skybox_name_;
     std::unique_ptr<TexturePanel> texture_panel_;
     std::unique_ptr<gl::RenderTarget> target_;

@@ -11,6 +11,7 @@
 #include "app/effect_options.hpp"
 #include "render/debug_renderer.hpp"
 #include "render/effect_session.hpp"
+#include "image/display_transform.hpp"
 #include "scene/scene.hpp"
 #include "ui/script.hpp"
 
@@ -30,7 +31,8 @@ struct ViewerOptions {
     std::string render_screenshot;            // render view at exit
     std::vector<ScriptAction> script;
     bool gl_debug = false;
-    int samples = 0;         // MSAA of the render view: 0, 2, 4 or 8
+    int samples = 4;         // MSAA of the render view: 0, 2, 4 or 8
+    image::DisplaySettings display;  // exposure and tone mapper of the view and its PNG pictures
     std::string debug_view;  // normals, uv, camera or light: every object starts in that debug view
     float ui_scale = 0;      // 0: the monitor's content scale
     bool stats = false;      // print UI frame and render times at exit
