@@ -60,6 +60,7 @@ CommandRunner add_compare_command(CLI::App& app) {
         std::string heatmap = "out/compare.png";
         bool json = false;
         bool sweep = false;
+        bool ground_truth = false;
         int sweep_random = 4;
         unsigned seed = 1;
     };
@@ -73,6 +74,9 @@ CommandRunner add_compare_command(CLI::App& app) {
     command->add_option("--heatmap", options->heatmap, "Error heat map (PNG); -T is appended to the name per technique")
         ->capture_default_str();
     command->add_flag("--json", options->json, "Print one JSON object per technique");
+    command->add_flag("--ground-truth", options->ground_truth,
+                      "Also measure the technique's own approximation (image-based lighting's split sum) against the integral it "
+                      "stands for, by Monte Carlo: CIEDE2000 per pixel and a heat map (NAME-truth.png)");
     command->add_flag("--sweep", options->sweep,
                       "Every parameter at its UI minimum, maximum and middle (alone), plus random combinations: a table of failures");
     command->add_option("--sweep-random", options->sweep_random, "Random combinations per technique in --sweep")
@@ -89,13 +93,16 @@ CommandRunner add_compare_command(CLI::App& app) {
         if (options->sweep) return run_sweep(request, techniques, options->sweep_random, options->seed, options->json);
         bool all_pass = true;
         for (const auto& technique : techniques) {
-            const CompareResult r = compare_technique(request, technique, options->reference_sets);
+            const CompareResult r = compare_technique(request, technique, options->reference_sets, options->ground_truth);
             all_pass = all_pass && r.pass;
             if (!options->heatmap.empty() && r.has_reference) {
                 const std::filesystem::path p(options->heatmap);
                 if (!p.parent_path().empty()) std::filesystem::create_directories(p.parent_path());
                 image::write_image((p.parent_path() / (p.stem().string() + "-" + technique + p.extension().string())).string(),
                                    r.heat_map);
+                if (r.ground_truth)
+                    image::write_image((p.parent_path() / (p.stem().string() + "-" + technique + "-truth" + p.extension().string())).string(),
+                                       r.ground_truth->heat_map);
             }
             if (options->json) {
                 nlohmann::json out = {{"technique", r.technique}, {"reference", r.has_reference}, {"pass", r.pass}};
@@ -110,6 +117,13 @@ CommandRunner add_compare_command(CLI::App& app) {
                                 {"tolerance", r.tolerance},
                                 {"tolerance_reason", r.tolerance_reason}});
                     if (r.pixels == 0) out["error"] = "the mesh covers no pixel: nothing was compared";
+                    if (r.ground_truth)
+                        out["ground_truth"] = {{"pixels", r.ground_truth->pixels},
+                                               {"mean_delta_e2000", r.ground_truth->mean_delta_e},
+                                               {"p95_delta_e2000", r.ground_truth->p95_delta_e},
+                                               {"max_delta_e2000", r.ground_truth->max_delta_e},
+                                               {"worst_pixel", {{"x", r.ground_truth->worst_x}, {"y", r.ground_truth->worst_y},
+                                                                {"reference", r.ground_truth->worst_reference}, {"truth", r.ground_truth->worst_truth}}}};
                 } else {
                     out["error"] = "no CPU reference for this technique";
                 }
@@ -122,6 +136,12 @@ CommandRunner add_compare_command(CLI::App& app) {
                 if (r.pixels_within_slack > 0) std::printf("  (%ld pixels within their slack)", r.pixels_within_slack);
                 if (r.pixels == 0) std::printf("  - the mesh covers no pixel: nothing was compared (check the camera and mesh)");
                 std::printf("\n");
+                if (r.ground_truth)
+                    std::printf("%-20s approximation against the Monte Carlo integral: CIEDE2000 mean %.3g, 95th percentile %.3g, max %.3g at (%d, %d)\n",
+                                "", r.ground_truth->mean_delta_e, r.ground_truth->p95_delta_e, r.ground_truth->max_delta_e, r.ground_truth->worst_x,
+                                r.ground_truth->worst_y);
+                else if (options->ground_truth)
+                    std::printf("%-20s exact up to float rounding: no approximation to measure (or no environment)\n", "");
             }
         }
         return all_pass ? 0 : 1;

@@ -1,5 +1,6 @@
 #include "app/gpu_cpu_compare.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <exception>
@@ -14,6 +15,8 @@
 #include "gl/render_target.hpp"
 #include "image/color_encoding.hpp"
 #include "reference/reference.hpp"
+#include "spectral/color_difference.hpp"
+#include "spectral/level_of_detail.hpp"
 #include "render/effect_session.hpp"
 
 namespace fxview::app {
@@ -34,10 +37,49 @@ std::array<float, 3> heat(double ratio) {
     return {1.0f, 2.0f - t, 0.0f};
 }
 
+// Linear sRGB radiance as CIELAB, white at radiance 1 (D65).
+spectral::Vec3 radiance_to_lab(const std::array<double, 4>& rgb) {
+    const double r = rgb[0], g = rgb[1], b = rgb[2];
+    const spectral::Vec3 xyz{0.4124 * r + 0.3576 * g + 0.1805 * b, 0.2126 * r + 0.7152 * g + 0.0722 * b, 0.0193 * r + 0.1192 * g + 0.9505 * b};
+    return spectral::xyz_to_lab(xyz, {0.95047, 1.0, 1.08883});
+}
+
+template <typename PixelPair>
+CompareResult::GroundTruth judge_ground_truth(int width, int height, const PixelPair& pair_at) {
+    CompareResult::GroundTruth truth;
+    truth.heat_map = image::FloatImage(width, height, 4);
+    std::vector<double> errors;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            float* heat_pixel = truth.heat_map.pixel(x, y);
+            heat_pixel[3] = 1.0f;
+            const auto pair = pair_at(x, y);
+            if (!pair) continue;
+            const double delta_e = spectral::delta_e_2000(radiance_to_lab(pair->first), radiance_to_lab(pair->second));
+            errors.push_back(delta_e);
+            if (delta_e > truth.max_delta_e || truth.worst_x < 0) {
+                truth.max_delta_e = delta_e;
+                truth.worst_x = x;
+                truth.worst_y = y;
+                truth.worst_reference = {pair->first[0], pair->first[1], pair->first[2]};
+                truth.worst_truth = {pair->second[0], pair->second[1], pair->second[2]};
+            }
+            const auto colour = heat(delta_e / 2.0);
+            std::copy(colour.begin(), colour.end(), heat_pixel);
+        }
+    truth.pixels = static_cast<long>(errors.size());
+    if (errors.empty()) return truth;
+    for (const double e : errors) truth.mean_delta_e += e / static_cast<double>(errors.size());
+    const auto p95 = errors.begin() + static_cast<std::ptrdiff_t>(errors.size() * 95 / 100);
+    std::nth_element(errors.begin(), p95, errors.end());
+    truth.p95_delta_e = *p95;
+    return truth;
+}
+
 }  // namespace
 
 CompareResult compare_technique(const RenderRequest& request, const std::string& technique,
-                                const std::vector<std::string>& reference_sets) {
+                                const std::vector<std::string>& reference_sets, bool ground_truth) {
     context::ContextOptions context_options;
     context_options.backend = request.backend;
     context_options.window_width = request.width;
@@ -79,7 +121,9 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
     struct Shaded {
         std::array<double, 4> cpu{};
         double slack = 0;
+        std::array<double, 4> truth{};
     };
+    const bool with_truth = ground_truth && ref->truth && !request.scene.environment.source.empty();
     std::vector<Shaded> shaded(static_cast<size_t>(request.width) * static_cast<size_t>(request.height));
     const auto input_at = [&](int x, int y) {
         reference::ShadingInput input;
@@ -112,6 +156,7 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
                         error = std::isnan(difference) ? std::numeric_limits<double>::infinity() : std::max(error, difference);
                     }
                     out.slack = ref->slack && error > tolerance ? ref->slack(input, reference_context) : 0.0;
+                    if (with_truth) out.truth = ref->truth(input, reference_context, static_cast<unsigned>(y * request.width + x + 1));
                 }
         } catch (...) {
             const std::lock_guard lock(failure_mutex);
@@ -168,6 +213,11 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
             std::copy(colour.begin(), colour.end(), heat_pixel);
         }
     result.mean_abs_error = result.pixels > 0 ? error_sum / static_cast<double>(result.pixels) : 0.0;
+    if (with_truth) result.ground_truth = judge_ground_truth(request.width, request.height, [&](int x, int y) -> std::optional<std::pair<std::array<double, 4>, std::array<double, 4>>> {
+        if (positions.pixel(x, y)[3] <= 0.0f) return std::nullopt;
+        const Shaded& pixel = shaded[static_cast<size_t>(y) * static_cast<size_t>(request.width) + static_cast<size_t>(x)];
+        return std::pair{pixel.cpu, pixel.truth};
+    });
     result.pass = result.pixels > 0 && result.mismatched_8bit == 0 && result.exceeding == 0;
     return result;
 }

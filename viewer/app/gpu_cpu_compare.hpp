@@ -28,12 +28,24 @@ struct CompareResult {
     std::string tolerance_reason;
     bool pass = false;
     image::FloatImage heat_map;  // error / tolerance per pixel (RGB), black where nothing is covered
+
+    // With ground_truth: how far the CPU reference (the technique's own approximation, e.g. the split
+    // sum) is from the integral it stands for (Monte Carlo), as CIEDE2000 of the radiances taken as
+    // colours (white: radiance 1). Absent where the technique approximates nothing.
+    struct GroundTruth {
+        long pixels = 0;
+        double mean_delta_e = 0, p95_delta_e = 0, max_delta_e = 0;
+        int worst_x = -1, worst_y = -1;
+        std::array<double, 3> worst_reference{}, worst_truth{};
+        image::FloatImage heat_map;  // ΔE00: blue 0, yellow 2, red 4 and beyond
+    };
+    std::optional<GroundTruth> ground_truth;
 };
 
 // `technique` empty: the request's technique, else the effect's first. `reference_sets` are
 // NAME=VALUE assignments given to the CPU side only (to show that a comparison can fail).
 CompareResult compare_technique(const RenderRequest& request, const std::string& technique,
-                                const std::vector<std::string>& reference_sets);
+                                const std::vector<std::string>& reference_sets, bool ground_truth = false);
 std::vector<std::string> technique_names(const EffectOptions& effect);
 
 }  // namespace fxview::app

@@ -175,18 +175,27 @@ DfgTable make_dfg_table(int size, int samples) {
                 a += (1.0 - fc) * weight;
                 b += fc * weight;
             }
-            table.data[static_cast<size_t>(j) * size + i] = glm::vec2(static_cast<float>(a / samples), static_cast<float>(b / samples));
+            // G by cosine-distributed directions (density (n·l)/π): the mean of (1 - v·h)⁵.
+            double g = 0.0;
+            for (int k = 0; k < samples; ++k) {
+                const glm::dvec2 u = hammersley(static_cast<unsigned>(k), static_cast<unsigned>(samples));
+                const double r = std::sqrt(u.x), phi = 2.0 * kPi * u.y;
+                const glm::dvec3 l(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - u.x)));
+                g += std::pow(1.0 - std::clamp(glm::dot(v, glm::normalize(l + v)), 0.0, 1.0), 5.0);
+            }
+            table.data[static_cast<size_t>(j) * size + i] =
+                glm::vec3(static_cast<float>(a / samples), static_cast<float>(b / samples), static_cast<float>(g / samples));
         }
     }
     return table;
 }
 
-glm::dvec2 DfgTable::lookup(double nv, double roughness) const {
+glm::dvec3 DfgTable::lookup(double nv, double roughness) const {
     const double x = nv * size - 0.5, y = roughness * size - 0.5;
     const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
     const double ax = x - x0, ay = y - y0;
     const auto at = [&](int i, int j) {
-        return glm::dvec2(data[static_cast<size_t>(std::clamp(j, 0, size - 1)) * size + static_cast<size_t>(std::clamp(i, 0, size - 1))]);
+        return glm::dvec3(data[static_cast<size_t>(std::clamp(j, 0, size - 1)) * size + static_cast<size_t>(std::clamp(i, 0, size - 1))]);
     };
     return glm::mix(glm::mix(at(x0, y0), at(x0 + 1, y0), ax), glm::mix(at(x0, y0 + 1), at(x0 + 1, y0 + 1), ax), ay);
 }

@@ -6,7 +6,9 @@
 //   specular  the radiance convolved with the GGX lobe around the mirror direction (n = v = r),
 //             one cube mip level per roughness step k / (levels - 1), level 0 the radiance itself
 //   irradiance  order-2 spherical harmonics of the radiance, convolved with the clamped cosine
-//   dfg       per (n·v, roughness): A, B with ∫ f_ss cos = F0 A + B for Schlick's Fresnel
+//   dfg       per (n·v, roughness): A, B with ∫ f_ss cos = F0 A + B for Schlick's Fresnel, and
+//             G = ∫ (1 - v·h)⁵ (n·l)/π dl, with which the diffuse part (1 - F(v·h)) base/π reflects
+//             (1 - F0)(1 - G) base of uniform light
 #pragma once
 #include <array>
 #include <vector>
@@ -32,9 +34,9 @@ glm::dvec3 evaluate_irradiance(const std::array<glm::vec3, 9>& sh, const glm::dv
 
 struct DfgTable {
     int size = 0;                 // size x size texels: n·v = (i + ½) / size across, roughness = (j + ½) / size up
-    std::vector<glm::vec2> data;  // row j (roughness) first
+    std::vector<glm::vec3> data;  // A, B, G; row j (roughness) first
     // Bilinear with clamp to edge, as GL samples the texture.
-    glm::dvec2 lookup(double nv, double roughness) const;
+    glm::dvec3 lookup(double nv, double roughness) const;
 };
 DfgTable make_dfg_table(int size, int samples = 512);
 

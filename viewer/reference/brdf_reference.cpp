@@ -168,8 +168,13 @@ Reference grid_reference() {
 // a quarter of one 8-bit code value at display white; plus, at cube corners, the spread of the
 // texels GL leaves to the implementation.
 using EnvironmentTerm = glm::dvec3 (*)(const EnvironmentLookup&, const brdf::Directions&, const ReferenceContext&, double* seam);
+using EnvironmentTruth = glm::dvec3 (*)(const EnvironmentLookup&, const brdf::Directions&, const ReferenceContext&, unsigned seed);
 
-Reference with_environment(Reference point_light, EnvironmentTerm term) {
+// Directions enough that the Monte Carlo's own error (cosine/GGX mixture, balance heuristic) stays
+// well below the split sum's on smooth environments; the sun is integrated apart.
+constexpr int kTruthSamples = 4096;
+
+Reference with_environment(Reference point_light, EnvironmentTerm term, EnvironmentTruth truth) {
     const Shader shade = point_light.shade;
     point_light.shade = [shade, term](const ShadingInput& in, const ReferenceContext& c) {
         std::array<double, 4> value = shade(in, c);
@@ -189,6 +194,14 @@ Reference with_environment(Reference point_light, EnvironmentTerm term) {
         }
         return total;
     };
+    point_light.truth = [shade, truth](const ShadingInput& in, const ReferenceContext& c, unsigned seed) {
+        std::array<double, 4> value = shade(in, c);
+        if (const auto environment = EnvironmentLookup::from(c)) {
+            const glm::dvec3 e = truth(*environment, directions(in), c, seed);
+            for (int k = 0; k < 3; ++k) value[static_cast<size_t>(k)] += e[k];
+        }
+        return value;
+    };
     point_light.why += "; the environment's light: 1e-3 of it (the GPU's bilinear weights), plus the texel spread at cube corners";
     return point_light;
 }
@@ -201,12 +214,28 @@ glm::dvec3 pbr_environment(const EnvironmentLookup& environment, const brdf::Dir
     return metallic_roughness_environment(environment, d, pbr(c), c.number("EnergyCompensation") != 0.0, seam);
 }
 
+glm::dvec3 lambert_truth(const EnvironmentLookup& environment, const brdf::Directions& d, const ReferenceContext& c, unsigned seed) {
+    const glm::dvec3 albedo = lambert(c).albedo;
+    return environment.integral(d, [&](const glm::dvec3&) { return albedo / std::numbers::pi; }, 1.0, kTruthSamples, seed);
+}
+
+glm::dvec3 pbr_truth(const EnvironmentLookup& environment, const brdf::Directions& d, const ReferenceContext& c, unsigned seed) {
+    const brdf::MetallicRoughness model = pbr(c);
+    const bool compensation = c.number("EnergyCompensation") != 0.0;
+    const auto f = [&](const glm::dvec3& l) {
+        brdf::Directions at = d;
+        at.l = l;
+        return metallic_roughness_compensated(environment, at, model, compensation);
+    };
+    return environment.integral(d, f, std::max(model.roughness * model.roughness, 1e-3), kTruthSamples, seed);
+}
+
 }  // namespace
 
 std::map<std::string, Reference> brdf_references() {
     std::map<std::string, Reference> all;
-    all.emplace("Lambert", with_environment(make(lambert, 1e-4, kWhy), lambert_environment));
-    all.emplace("PBR", with_environment(make(pbr, 1e-4, kWhy), pbr_environment));
+    all.emplace("Lambert", with_environment(make(lambert, 1e-4, kWhy), lambert_environment, lambert_truth));
+    all.emplace("PBR", with_environment(make(pbr, 1e-4, kWhy), pbr_environment, pbr_truth));
     all.emplace("ModifiedPhong", make(modified_phong, 1e-4, kWhy));
     all.emplace("CookTorranceBeckmann", make(cook_torrance_beckmann, 1e-4, kWhy));
     all.emplace("AshikhminShirley", make(ashikhmin_shirley, 1e-4, kWhy));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "lighting/image_based_lighting.hpp"
 
@@ -33,19 +34,55 @@ glm::dvec3 EnvironmentLookup::irradiance(const glm::dvec3& n) const {
     return glm::max(lighting::evaluate_irradiance(maps_->prefiltered().irradiance, rotation_ * n), glm::dvec3(0.0)) * intensity_;
 }
 
-glm::dvec2 EnvironmentLookup::dfg(double nv, double roughness) const { return maps_->dfg().lookup(nv, roughness); }
+glm::dvec3 EnvironmentLookup::dfg(double nv, double roughness) const { return maps_->dfg().lookup(nv, roughness); }
+
+glm::dvec3 EnvironmentLookup::unfiltered(const glm::dvec3& world) const {
+    return glm::dvec3(lighting::sample_bilinear(maps_->unfiltered().radiance, rotation_ * world)) * intensity_;
+}
+
+glm::dvec3 EnvironmentLookup::discs(const brdf::Directions& d, const std::function<glm::dvec3(const glm::dvec3&)>& f) const {
+    glm::dvec3 sum(0.0);
+    const glm::dmat3 to_world = glm::transpose(rotation_);  // rotations: the inverse is the transpose
+    for (const lighting::DiscLight& disc : maps_->unfiltered().discs) {
+        const glm::dvec3 centre = to_world * disc.direction;
+        const glm::dvec3 up = std::abs(centre.y) < 0.999 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+        const glm::dvec3 dt = glm::normalize(glm::cross(up, centre)), db = glm::cross(centre, dt);
+        // 19 points of equal weight: the centre and rings at 0.45 and 0.85 of the radius (6 and 12 points).
+        for (int k = 0; k < 19; ++k) {
+            const double ring = k == 0 ? 0.0 : k <= 6 ? 0.45 : 0.85, angle = 2 * std::numbers::pi * (k % 12) / (k <= 6 ? 6.0 : 12.0);
+            const glm::dvec3 l = glm::normalize(centre + std::tan(ring * disc.angular_radius) * (std::cos(angle) * dt + std::sin(angle) * db));
+            const double nl = glm::dot(d.n, l);
+            if (nl > 0.0) sum += f(l) * nl * disc.radiance * intensity_ * disc.solid_angle() / 19.0;
+        }
+    }
+    return sum;
+}
+
+glm::dvec3 metallic_roughness_compensated(const EnvironmentLookup& environment, const brdf::Directions& d, const brdf::MetallicRoughness& m,
+                                          bool compensation) {
+    if (glm::dot(d.n, d.l) <= 0.0 || glm::dot(d.n, d.v) <= 0.0) return glm::dvec3(0.0);
+    const glm::dvec3 f = brdf::evaluate(m, d);
+    if (!compensation) return f;
+    const glm::dvec3 h = glm::normalize(d.l + d.v);
+    const glm::dvec3 f0 = glm::mix(glm::dvec3(0.04), m.base_color, m.metallic);
+    const glm::dvec3 fresnel = f0 + (1.0 - f0) * std::pow(1.0 - std::max(glm::dot(d.v, h), 0.0), 5.0);
+    const glm::dvec3 diffuse = (1.0 - fresnel) * (1.0 - m.metallic) * m.base_color / std::numbers::pi;
+    const glm::dvec3 ab = environment.dfg(glm::dot(d.n, d.v), m.roughness);
+    return diffuse + (f - diffuse) * (1.0 + f0 * (1.0 / std::max(ab.x + ab.y, 1e-4) - 1.0));
+}
 
 glm::dvec3 metallic_roughness_environment(const EnvironmentLookup& environment, const brdf::Directions& d, const brdf::MetallicRoughness& m,
                                           bool compensation, double* seam) {
     const double nv = glm::dot(d.n, d.v);
     if (nv <= 0.0) return glm::dvec3(0.0);
     const glm::dvec3 f0 = glm::mix(glm::dvec3(0.04), m.base_color, m.metallic);
-    const glm::dvec2 ab = environment.dfg(nv, m.roughness);
+    const glm::dvec3 ab = environment.dfg(nv, m.roughness);
     const glm::dvec3 scale = compensation ? 1.0 + f0 * (1.0 / std::max(ab.x + ab.y, 1e-4) - 1.0) : glm::dvec3(1.0);
-    const glm::dvec3 r = 2.0 * nv * d.n - d.v;  // reflect(-v, n)
+    // The lobe's dominant direction: the mirror direction turned towards n as the surface roughens.
+    const double a = std::clamp(m.roughness, 0.0, 1.0), s = (1.0 - a) * (std::sqrt(1.0 - a) + a);
+    const glm::dvec3 r = glm::normalize(glm::mix(d.n, 2.0 * nv * d.n - d.v, s));
     const glm::dvec3 specular = (f0 * ab.x + ab.y) * scale * environment.radiance(r, m.roughness, seam);
-    const glm::dvec3 fresnel = f0 + (1.0 - f0) * std::pow(1.0 - nv, 5.0);
-    return specular + (1.0 - fresnel) * (1.0 - m.metallic) * m.base_color * environment.irradiance(d.n);
+    return specular + (1.0 - f0) * (1.0 - ab.z) * (1.0 - m.metallic) * m.base_color * environment.irradiance(d.n);
 }
 
 }  // namespace fxview::reference

@@ -2,6 +2,7 @@
 // through GL's filtering rules (cpu_sampler.hpp), in double precision: the reference of
 // effects/lib/environment.glsl, written from its documented arithmetic.
 #pragma once
+#include <functional>
 #include <optional>
 
 #include "brdf/models.hpp"
@@ -19,16 +20,31 @@ public:
     // texels at a cube corner (where GL leaves the texel to the implementation).
     glm::dvec3 radiance(const glm::dvec3& d, double roughness, double* seam = nullptr) const;
     glm::dvec3 irradiance(const glm::dvec3& n) const;  // E / pi, at least 0
-    glm::dvec2 dfg(double nv, double roughness) const;
+    glm::dvec3 dfg(double nv, double roughness) const;  // A, B, G
+    // The ground truth of ∫ L(l) f(l) (n·l) dl over the unfiltered environment: Monte Carlo with
+    // `samples` directions (half cosine-, half GGX-distributed for `alpha` around n, combined by the
+    // balance heuristic; a Hammersley set turned per pixel by `seed`) plus each disc light (the sun)
+    // by a 19-point quadrature over it.
+    template <typename Brdf>
+    glm::dvec3 integral(const brdf::Directions& d, const Brdf& f, double alpha, int samples, unsigned seed) const;
 
 private:
     const render::EnvironmentMaps* maps_ = nullptr;
+    glm::dvec3 unfiltered(const glm::dvec3& world) const;  // bilinear in the radiance without discs
+    glm::dvec3 discs(const brdf::Directions& d, const std::function<glm::dvec3(const glm::dvec3&)>& f) const;
     glm::dmat3 rotation_{1.0};
     double intensity_ = 0.0;
 };
+
+// The metallic-roughness BRDF the environment term stands for: brdf.glsl's metallic_roughness with
+// its specular part scaled by the multiple-scattering compensation 1 + F0 (1/E(n·v) - 1) when on.
+glm::dvec3 metallic_roughness_compensated(const EnvironmentLookup& environment, const brdf::Directions& d, const brdf::MetallicRoughness& m,
+                                          bool compensation);
 
 // metallic_roughness_environment() of environment.glsl.
 glm::dvec3 metallic_roughness_environment(const EnvironmentLookup& environment, const brdf::Directions& d, const brdf::MetallicRoughness& m,
                                           bool compensation, double* seam = nullptr);
 
 }  // namespace fxview::reference
+
+#include "reference/environment_integral.hpp"

@@ -59,6 +59,10 @@ struct Reference {
     // of the jump; in a sharp highlight a few ulps of a cosine move the value by more than the
     // tolerance. Empty: none.
     std::function<double(const ShadingInput&, const ReferenceContext&)> slack;
+    // Where the technique approximates an integral (image-based lighting's split sum): the integral
+    // itself by Monte Carlo, for `compare --ground-truth`; `seed` varies the sample set per pixel.
+    // Empty: the technique is exact up to float rounding.
+    std::function<std::array<double, 4>(const ShadingInput&, const ReferenceContext&, unsigned seed)> truth;
 };
 
 // The largest change of any colour channel when the pixel's normal turns by `angle` (radians) in

@@ -44,12 +44,14 @@ bool EnvironmentMaps::is_resource_name(const std::string& name) {
 
 EnvironmentMaps::EnvironmentMaps(const std::string& source) : source_(source) {
     if (source.empty()) {
+        environment_.radiance = lighting::FloatCube(1);
         prefiltered_.specular.assign(1, lighting::FloatCube(1));
         prefiltered_.irradiance.fill(glm::vec3(0.0f));
         dfg_.size = 1;
-        dfg_.data.assign(1, glm::vec2(0.0f));
+        dfg_.data.assign(1, glm::vec3(0.0f));
     } else {
-        prefiltered_ = lighting::prefilter(lighting::make_environment(source, kSize), kLevels);
+        environment_ = lighting::make_environment(source, kSize);
+        prefiltered_ = lighting::prefilter(environment_, kLevels);
         dfg_ = lighting::make_dfg_table(kDfgSize);
     }
     specular_data_.type = texture::TextureType::Cube;
@@ -74,8 +76,8 @@ EnvironmentMaps::EnvironmentMaps(const std::string& source) : source_(source) {
     std::vector<float> table;
     for (int j = dfg_.size - 1; j >= 0; --j)
         for (int i = 0; i < dfg_.size; ++i) {
-            const glm::vec2 ab = dfg_.data[static_cast<size_t>(j) * dfg_.size + i];
-            table.insert(table.end(), {ab.x, ab.y, 0.0f, 1.0f});
+            const glm::vec3 abg = dfg_.data[static_cast<size_t>(j) * dfg_.size + i];
+            table.insert(table.end(), {abg.x, abg.y, abg.z, 1.0f});
         }
     texture::TextureData dfg{texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(dfg_.size, dfg_.size, table)}}, "split-sum DFG table"};
     dfg_texture_ = upload(dfg, dfg.source);

@@ -3,7 +3,7 @@
 // "Environment lighting"):
 //   environment:specular    cube map, RGBA32F, one mip level per roughness step (level 0 the radiance)
 //   environment:irradiance  9x1 RGBA32F: the order-2 SH coefficients of the cosine-convolved radiance / pi
-//   environment:dfg         2D RGBA32F: (A, B) of the split sum per (n·v, roughness), clamped at the edges
+//   environment:dfg         2D RGBA32F: (A, B, G) of the split sum per (n·v, roughness), clamped at the edges
 // No source: black textures of one texel (an effect samples them and adds nothing).
 #pragma once
 #include <string>
@@ -31,12 +31,14 @@ public:
 
     // The same numbers on the CPU.
     const lighting::PrefilteredEnvironment& prefiltered() const { return prefiltered_; }
+    const lighting::Environment& unfiltered() const { return environment_; }  // the radiance and its discs, for ground truths
     const lighting::DfgTable& dfg() const { return dfg_; }
     const texture::TextureData& specular_data() const { return specular_data_; }  // faces[face][level], GL rows
     const texture::TextureData& specular_level(int level) const { return specular_levels_.at(static_cast<size_t>(level)); }  // one level's six faces
 
 private:
     std::string source_;
+    lighting::Environment environment_;
     lighting::PrefilteredEnvironment prefiltered_;
     lighting::DfgTable dfg_;
     texture::TextureData specular_data_;

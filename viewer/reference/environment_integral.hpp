@@ -1,0 +1,51 @@
+// The template part of environment_reference.hpp: the Monte Carlo ground truth.
+#pragma once
+#include <cmath>
+#include <numbers>
+
+#include "lighting/image_based_lighting.hpp"
+
+namespace fxview::reference {
+
+template <typename Brdf>
+glm::dvec3 EnvironmentLookup::integral(const brdf::Directions& d, const Brdf& f, double alpha, int samples, unsigned seed) const {
+    const double nv = glm::dot(d.n, d.v);
+    if (nv <= 0.0) return glm::dvec3(0.0);
+    const glm::dvec3 t = d.t, b = glm::cross(d.n, d.t);
+    // A per-pixel turn of the point set (Cranley-Patterson), so that pixels do not share one pattern.
+    const auto hash = [](unsigned x) {
+        x ^= x >> 16;
+        x *= 0x7feb352dU;
+        x ^= x >> 15;
+        x *= 0x846ca68bU;
+        return (x ^ (x >> 16)) * 2.3283064365386963e-10;
+    };
+    const glm::dvec2 shift(hash(seed), hash(seed * 7919u + 1u));
+    const auto pdf_cosine = [&](double nl) { return nl / std::numbers::pi; };
+    const auto pdf_ggx = [&](const glm::dvec3& l) {
+        const glm::dvec3 h = glm::normalize(l + d.v);
+        return lighting::ggx_d(glm::dot(d.n, h), alpha) * glm::dot(d.n, h) / (4.0 * std::max(glm::dot(d.v, h), 1e-12));
+    };
+    glm::dvec3 sum(0.0);
+    for (int i = 0; i < samples; ++i) {
+        glm::dvec2 u = lighting::hammersley(static_cast<unsigned>(i / 2), static_cast<unsigned>(samples / 2)) + shift;
+        u -= glm::floor(u);
+        glm::dvec3 l;
+        if (i % 2 == 0) {  // cosine-distributed
+            const double r = std::sqrt(u.x), phi = 2 * std::numbers::pi * u.y;
+            l = r * std::cos(phi) * t + r * std::sin(phi) * b + std::sqrt(std::max(0.0, 1.0 - u.x)) * d.n;
+        } else {  // GGX normals, reflected
+            const glm::dvec3 hl = lighting::sample_ggx(u.x, u.y, alpha);
+            const glm::dvec3 h = hl.x * t + hl.y * b + hl.z * d.n;
+            l = 2.0 * glm::dot(d.v, h) * h - d.v;
+        }
+        const double nl = glm::dot(d.n, l);
+        if (nl <= 0.0) continue;
+        const double pdf = 0.5 * pdf_cosine(nl) + 0.5 * pdf_ggx(l);
+        if (!(pdf > 0.0)) continue;
+        sum += unfiltered(l) * f(l) * nl / pdf;
+    }
+    return sum / static_cast<double>(samples) + discs(d, f);
+}
+
+}  // namespace fxview::reference
