@@ -35,7 +35,12 @@ run: build
 	$(FXVIEW) render effects/spectral/thinfilm.fx --technique Bubble --set Thickness=250 --set Variation=600 --mesh sphere --size 512x512 --out out/sphere-bubble.png
 	$(FXVIEW) render effects/spectral/thinfilm.fx --technique MultiLayerFaster --mesh knot --size 512x512 --out out/knot-multilayer.png
 	$(FXVIEW) render effects/brdf/analytic.fx --preset effects/brdf/presets/gold.json --technique PBR --mesh knot --size 512x512 --samples 4 --out out/knot-pbr-gold.png
-	$(FXVIEW) render effects/brdf/analytic.fx --technique AshikhminShirley --mesh torus --camera-rotate 30,0,0 --size 512x512 --samples 4 --out out/torus-ashikhmin-shirley.png
+	$(FXVIEW) render effects/brdf/analytic.fx --technique AshikhminShirley --mesh torus --camera-rotate 30,0,0 --size 512x512 --samples 4 --environment studio --tone-map pbr-neutral --out out/torus-ashikhmin-shirley.png
+	@for metal in gold copper silver aluminium titanium; do \
+	  $(FXVIEW) render effects/brdf/analytic.fx --preset effects/brdf/presets/$$metal.json --mesh sphere --size 512x512 --out out/sphere-$$metal.png || exit 1; \
+	done
+	$(FXVIEW) render effects/brdf/analytic.fx --preset effects/brdf/presets/gold.json --set Roughness=0.08 --environment sky:25,4500 --mesh knot --size 512x512 --out out/knot-gold-sky.png
+	$(FXVIEW) compare effects/brdf/analytic.fx --technique PBR --environment studio --ground-truth --size 96x96 --heatmap out/compare-ibl.png
 	$(FXVIEW) render effects/spectral/cd.fx --technique Grating --mesh disc --camera-rotate 50,0,0 --size 512x512 --out out/disc-cd.png
 	$(FXVIEW) spectra plot D65 A F11 TCS09 --out out/spectra.png
 	$(FXVIEW) compare effects/spectral/wavelength.fx --heatmap out/compare.png

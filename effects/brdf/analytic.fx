@@ -6,7 +6,7 @@
 // viewer/reference/brdf_reference.cpp on viewer/brdf/models.cpp.
 #include "standard.glsl"
 #include "brdf.glsl"
-#include "environment.glsl"
+#include "environment_pbr.glsl"
 
 uniform float LightIrradiance < string UIName = "Light irradiance E"; float UIMin = 0; float UIMax = 20; float UIStep = 0.1; string UIGroup = "Light";
                                 string UIHelp = "Irradiance the point light delivers at normal incidence (no distance fall-off)"; > = 3.0;
@@ -90,10 +90,13 @@ GLSLShader PBRFS {
 GLSLShader ModifiedPhongFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
+    vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return modified_phong(g, PhongDiffuse, PhongSpecular, PhongExponent); }
+    #include "environment_light.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? modified_phong(f, PhongDiffuse, PhongSpecular, PhongExponent) : vec3(0.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(sqrt(2.0 / (4.0 * PhongExponent + 2.0)), 0.02, 1.0));
         fx_capture();
     }
 }
@@ -101,10 +104,13 @@ GLSLShader ModifiedPhongFS {
 GLSLShader CookTorranceBeckmannFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
+    vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return cook_torrance_beckmann(g, CTDiffuse, CTSpecular, BeckmannM, Eta, PrintedBeckmann); }
+    #include "environment_light.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? cook_torrance_beckmann(f, CTDiffuse, CTSpecular, BeckmannM, Eta, PrintedBeckmann) : vec3(0.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(BeckmannM, 0.02, 1.0));
         fx_capture();
     }
 }
@@ -112,10 +118,13 @@ GLSLShader CookTorranceBeckmannFS {
 GLSLShader AshikhminShirleyFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
+    vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return ashikhmin_shirley(g, ASDiffuse, ASSpecular, Nu, Nv); }
+    #include "environment_light.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? ashikhmin_shirley(f, ASDiffuse, ASSpecular, Nu, Nv) : vec3(0.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(sqrt(2.0 / (sqrt(Nu * Nv) + 2.0)), 0.02, 1.0));
         fx_capture();
     }
 }
@@ -123,10 +132,13 @@ GLSLShader AshikhminShirleyFS {
 GLSLShader AshikhminShirleyFitFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
+    vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return ashikhmin_shirley_fit(g, FitDiffuse, FitSpecular, FitExponent); }
+    #include "environment_light.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? ashikhmin_shirley_fit(f, FitDiffuse, FitSpecular, FitExponent) : vec3(0.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(sqrt(2.0 / (FitExponent + 2.0)), 0.02, 1.0));
         fx_capture();
     }
 }
@@ -134,10 +146,13 @@ GLSLShader AshikhminShirleyFitFS {
 GLSLShader CookTorranceGGXFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
+    vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return cook_torrance_ggx(g, GGXDiffuse, GGXF0, GGXAlpha); }
+    #include "environment_light.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? cook_torrance_ggx(f, GGXDiffuse, GGXF0, GGXAlpha) : vec3(0.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(GGXAlpha, 0.02, 1.0));
         fx_capture();
     }
 }
@@ -145,10 +160,13 @@ GLSLShader CookTorranceGGXFS {
 GLSLShader CookTorranceBeckmannSchlickFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
+    vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return cook_torrance_beckmann_schlick(g, CTSDiffuse, CTSF0, CTSSlope); }
+    #include "environment_light.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? cook_torrance_beckmann_schlick(f, CTSDiffuse, CTSF0, CTSSlope) : vec3(0.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(CTSSlope, 0.02, 1.0));
         fx_capture();
     }
 }
@@ -156,10 +174,13 @@ GLSLShader CookTorranceBeckmannSchlickFS {
 GLSLShader BlinnPhongFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
+    vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return blinn_phong(g, BlinnDiffuse, BlinnSpecular, BlinnExponent); }
+    #include "environment_light.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? blinn_phong(f, BlinnDiffuse, BlinnSpecular, BlinnExponent) : vec3(0.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(sqrt(2.0 / (BlinnExponent + 2.0)), 0.02, 1.0));
         fx_capture();
     }
 }
@@ -167,10 +188,13 @@ GLSLShader BlinnPhongFS {
 GLSLShader WardFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
+    vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return ward_isotropic(g, WardDiffuse, WardSpecular, WardAlpha); }
+    #include "environment_light.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? ward_isotropic(f, WardDiffuse, WardSpecular, WardAlpha) : vec3(0.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(WardAlpha, 0.02, 1.0));
         fx_capture();
     }
 }

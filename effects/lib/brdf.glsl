@@ -24,6 +24,21 @@ Frame make_frame(vec3 position, vec3 normal, vec3 tangent, vec3 light_position, 
     return f;
 }
 
+// The frame of unit vectors to the light and the eye, the normal and the tangent (orthogonal to n).
+Frame frame_of(vec3 l, vec3 v, vec3 n, vec3 t) {
+    Frame f;
+    f.n = n;
+    f.l = l;
+    f.v = v;
+    f.t = t;
+    f.h = normalize(l + v);
+    f.nl = dot(n, l);
+    f.nv = dot(n, v);
+    f.nh = dot(n, f.h);
+    f.vh = dot(v, f.h);
+    return f;
+}
+
 bool visible(Frame f) { return f.nl > 0.0 && f.nv > 0.0; }
 
 float ggx(float nh, float alpha) {

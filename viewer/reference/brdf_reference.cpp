@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <functional>
 #include <optional>
 
 
@@ -167,8 +168,8 @@ Reference grid_reference() {
 // neighbouring texels), so the environment term gets 1e-3 of its value (at least of 1) as slack,
 // a quarter of one 8-bit code value at display white; plus, at cube corners, the spread of the
 // texels GL leaves to the implementation.
-using EnvironmentTerm = glm::dvec3 (*)(const EnvironmentLookup&, const brdf::Directions&, const ReferenceContext&, double* seam);
-using EnvironmentTruth = glm::dvec3 (*)(const EnvironmentLookup&, const brdf::Directions&, const ReferenceContext&, unsigned seed);
+using EnvironmentTerm = std::function<glm::dvec3(const EnvironmentLookup&, const brdf::Directions&, const ReferenceContext&, double* seam)>;
+using EnvironmentTruth = std::function<glm::dvec3(const EnvironmentLookup&, const brdf::Directions&, const ReferenceContext&, unsigned seed)>;
 
 // Directions enough that the Monte Carlo's own error (cosine/GGX mixture, balance heuristic) stays
 // well below the split sum's on smooth environments; the sun is integrated apart.
@@ -230,20 +231,46 @@ glm::dvec3 pbr_truth(const EnvironmentLookup& environment, const brdf::Direction
     return environment.integral(d, f, std::max(model.roughness * model.roughness, 1e-3), kTruthSamples, seed);
 }
 
+// A model lit by the environment through environment_light.glsl's filtered importance sampling
+// (`alpha_from`: the sampled GGX width the technique passes), and its ground truth.
+template <typename ModelFrom, typename AlphaFrom>
+Reference sampled_environment(ModelFrom model_from, AlphaFrom alpha_from) {
+    const auto value_towards = [model_from](const ReferenceContext& c, const brdf::Directions& d) {
+        return [model = model_from(c), d](const glm::dvec3& l) {
+            brdf::Directions at = d;
+            at.l = l;
+            return brdf::evaluate(model, at);
+        };
+    };
+    const auto alpha = [alpha_from](const ReferenceContext& c) { return std::clamp(alpha_from(c), 0.02, 1.0); };
+    return with_environment(
+        make(model_from, 1e-4, kWhy),
+        [value_towards, alpha](const EnvironmentLookup& environment, const brdf::Directions& d, const ReferenceContext& c, double* seam) {
+            return environment.light(d, value_towards(c, d), alpha(c), seam);
+        },
+        [value_towards, alpha](const EnvironmentLookup& environment, const brdf::Directions& d, const ReferenceContext& c, unsigned seed) {
+            return environment.integral(d, value_towards(c, d), alpha(c), kTruthSamples, seed);
+        });
+}
+
 }  // namespace
 
 std::map<std::string, Reference> brdf_references() {
     std::map<std::string, Reference> all;
     all.emplace("Lambert", with_environment(make(lambert, 1e-4, kWhy), lambert_environment, lambert_truth));
     all.emplace("PBR", with_environment(make(pbr, 1e-4, kWhy), pbr_environment, pbr_truth));
-    all.emplace("ModifiedPhong", make(modified_phong, 1e-4, kWhy));
-    all.emplace("CookTorranceBeckmann", make(cook_torrance_beckmann, 1e-4, kWhy));
-    all.emplace("AshikhminShirley", make(ashikhmin_shirley, 1e-4, kWhy));
-    all.emplace("AshikhminShirleyFit", make(ashikhmin_shirley_fit, 1e-4, kWhy));
-    all.emplace("CookTorranceGGX", make(cook_torrance_ggx, 1e-4, kWhy));
-    all.emplace("CookTorranceBeckmannSchlick", make(cook_torrance_beckmann_schlick, 1e-4, kWhy));
-    all.emplace("BlinnPhong", make(blinn_phong, 1e-4, kWhy));
-    all.emplace("Ward", make(ward, 1e-4, kWhy));
+    // The sampled GGX widths environment_light() gets in analytic.fx: a lobe of similar size (Walter's
+    // Blinn-Phong correspondence, the Phong lobe about r being about four times the exponent about h).
+    all.emplace("ModifiedPhong", sampled_environment(modified_phong, [](const ReferenceContext& c) { return std::sqrt(2.0 / (4.0 * c.number("PhongExponent") + 2.0)); }));
+    all.emplace("CookTorranceBeckmann", sampled_environment(cook_torrance_beckmann, [](const ReferenceContext& c) { return c.number("BeckmannM"); }));
+    all.emplace("AshikhminShirley", sampled_environment(ashikhmin_shirley, [](const ReferenceContext& c) {
+                    return std::sqrt(2.0 / (std::sqrt(c.number("Nu") * c.number("Nv")) + 2.0));
+                }));
+    all.emplace("AshikhminShirleyFit", sampled_environment(ashikhmin_shirley_fit, [](const ReferenceContext& c) { return std::sqrt(2.0 / (c.number("FitExponent") + 2.0)); }));
+    all.emplace("CookTorranceGGX", sampled_environment(cook_torrance_ggx, [](const ReferenceContext& c) { return c.number("GGXAlpha"); }));
+    all.emplace("CookTorranceBeckmannSchlick", sampled_environment(cook_torrance_beckmann_schlick, [](const ReferenceContext& c) { return c.number("CTSSlope"); }));
+    all.emplace("BlinnPhong", sampled_environment(blinn_phong, [](const ReferenceContext& c) { return std::sqrt(2.0 / (c.number("BlinnExponent") + 2.0)); }));
+    all.emplace("Ward", sampled_environment(ward, [](const ReferenceContext& c) { return c.number("WardAlpha"); }));
     all.emplace("BrdfGrid", grid_reference());
     return all;
 }

@@ -1,4 +1,5 @@
-// The template part of environment_reference.hpp: the Monte Carlo ground truth.
+// The template part of environment_reference.hpp: filtered importance sampling as environment_light.glsl
+// does it, and the Monte Carlo ground truth.
 #pragma once
 #include <cmath>
 #include <numbers>
@@ -6,6 +7,44 @@
 #include "lighting/image_based_lighting.hpp"
 
 namespace fxview::reference {
+
+template <typename Brdf>
+glm::dvec3 EnvironmentLookup::light(const brdf::Directions& d, const Brdf& f, double alpha, double* seam) const {
+    constexpr int kSamples = 32;
+    const double nv = glm::dot(d.n, d.v);
+    if (nv <= 0.0) return glm::dvec3(0.0);
+    const glm::dvec3 x = d.t, y = glm::cross(d.n, d.t);
+    glm::dvec3 sum(0.0);
+    double spread = 0.0;
+    for (int i = 0; i < kSamples; ++i) {
+        const glm::dvec2 u = lighting::hammersley(static_cast<unsigned>(i / 2), kSamples / 2);
+        glm::dvec3 l;
+        if (i % 2 == 0) {
+            const double r = std::sqrt(u.x), phi = 2 * std::numbers::pi * u.y;
+            l = r * std::cos(phi) * x + r * std::sin(phi) * y + std::sqrt(std::max(0.0, 1.0 - u.x)) * d.n;
+        } else {
+            const glm::dvec3 hl = lighting::sample_ggx(u.x, u.y, alpha);
+            const glm::dvec3 h = hl.x * x + hl.y * y + hl.z * d.n;
+            l = 2.0 * glm::dot(d.v, h) * h - d.v;
+        }
+        const glm::dvec3 h = glm::normalize(l + d.v);
+        const double nh = glm::dot(d.n, h), a2 = alpha * alpha, q = nh * nh * (a2 - 1.0) + 1.0;
+        const double pdf = 0.5 * std::max(glm::dot(d.n, l), 0.0) / std::numbers::pi +
+                           0.5 * a2 / (std::numbers::pi * q * q) * nh / (4.0 * std::max(glm::dot(d.v, h), 1e-6));
+        const double nl = glm::dot(d.n, l);
+        if (nl <= 0.0 || !(pdf > 0.0)) continue;
+        const glm::dvec3 value = f(l);
+        if (!std::isfinite(value.r) || !std::isfinite(value.g) || !std::isfinite(value.b)) continue;
+        const double share = 1.0 / (kSamples * pdf);
+        const double roughness = std::sqrt(std::clamp(std::sqrt(share / (4.0 * std::numbers::pi)), 0.0, 1.0));
+        double seam_here = 0.0;
+        const glm::dvec3 weight = value * nl / pdf / static_cast<double>(kSamples);
+        sum += weight * radiance(l, roughness, &seam_here);
+        spread += seam_here * std::max({weight.r, weight.g, weight.b});
+    }
+    if (seam) *seam = spread;
+    return sum;
+}
 
 template <typename Brdf>
 glm::dvec3 EnvironmentLookup::integral(const brdf::Directions& d, const Brdf& f, double alpha, int samples, unsigned seed) const {

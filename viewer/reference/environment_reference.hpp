@@ -25,6 +25,10 @@ public:
     // `samples` directions (half cosine-, half GGX-distributed for `alpha` around n, combined by the
     // balance heuristic; a Hammersley set turned per pixel by `seed`) plus each disc light (the sun)
     // by a 19-point quadrature over it.
+    // environment_light.glsl: 32 directions (half cosine-, half GGX(alpha)-distributed, balance
+    // heuristic), each reading the prefiltered radiance whose lobe covers its share of the sphere.
+    template <typename Brdf>
+    glm::dvec3 light(const brdf::Directions& d, const Brdf& f, double alpha, double* seam = nullptr) const;
     template <typename Brdf>
     glm::dvec3 integral(const brdf::Directions& d, const Brdf& f, double alpha, int samples, unsigned seed) const;
 

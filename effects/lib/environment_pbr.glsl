@@ -1,0 +1,31 @@
+// The metallic-roughness model of brdf.glsl lit by the environment: the split-sum approximation with
+// multiple-scattering energy compensation. Assumptions of the split sum (their error is what
+// `fxview compare --ground-truth` measures): the radiance is prefiltered as if n = v = r, and the
+// lobe's shape and its Fresnel-weighted integral are taken apart.
+#pragma once
+#include "brdf.glsl"
+#include "environment.glsl"
+
+uniform bool EnergyCompensation < string UIName = "Multiple-scattering compensation"; string UIGroup = "Environment";
+                                  string UIHelp = "Adds the energy that single-scattering GGX loses on rough surfaces (environment light only)"; > = true;
+
+// Where a GGX lobe of `roughness` gathers most light: the mirror direction for smooth surfaces, turning
+// towards the normal as they roughen (Lagarde & de Rousiers 2014, Frostbite), since the prefiltered
+// lobes are centred as if n = v.
+vec3 specular_dominant_direction(Frame f, float roughness) {
+    float s = (1.0 - roughness) * (sqrt(1.0 - roughness) + roughness);
+    return normalize(mix(f.n, reflect(-f.v, f.n), s));
+}
+
+// Metallic-roughness GGX (brdf.glsl's metallic_roughness) lit by the environment: the specular split
+// sum scaled by 1 + F0 (1/E - 1) for multiple scattering (E = A + B, Fdez-Agüera 2019), and the
+// diffuse part by what it reflects of uniform light, (1 - F0)(1 - G). Black where the eye is below the surface.
+vec3 metallic_roughness_environment(Frame f, vec3 base, float metallic, float roughness) {
+    if (f.nv <= 0.0) return vec3(0.0);
+    vec3 f0 = mix(vec3(0.04), base, metallic);
+    vec3 ab = environment_dfg(f.nv, roughness);
+    vec3 compensation = EnergyCompensation ? 1.0 + f0 * (1.0 / max(ab.x + ab.y, 1e-4) - 1.0) : vec3(1.0);
+    vec3 specular = (f0 * ab.x + ab.y) * compensation * environment_radiance(specular_dominant_direction(f, roughness), roughness);
+    vec3 diffuse = (1.0 - f0) * (1.0 - ab.z) * (1.0 - metallic) * base * environment_irradiance(f.n);
+    return specular + diffuse;
+}
