@@ -26,6 +26,13 @@ done
 # Issue #15: the BRDF grid on the NVIDIA driver (brdf-check figures, the grid against its CPU reference).
 "$fxview" brdf-check tests/effects/brdf/ggx_single_scattering.brdf --set alpha=1 --json | tee "$out/brdf-check-ggx.json" || true
 "$fxview" compare effects/brdf/analytic.fx --technique BrdfGrid --size 256x256 --json | tee "$out/compare-brdf-grid.jsonl" || true
+# Issue #12: image-based lighting on the NVIDIA driver (GPU against the CPU split sum and sampled
+# environment light; seamless cube filtering and fixed-point texture weights are the driver's), the
+# ground truth, the furnace and a metal preset.
+"$fxview" compare effects/brdf/analytic.fx --environment studio --ground-truth --size 96x96 --json --heatmap "$out/compare-ibl.png" | tee "$out/compare-ibl.jsonl" || true
+"$fxview" compare effects/brdf/analytic.fx -t PBR --environment sky --size 96x96 --json | tee "$out/compare-ibl-sky.jsonl" || true
+"$fxview" render effects/brdf/analytic.fx -t PBR --set BaseColor=1,1,1 --set Metallic=1 --set LightIrradiance=0 --set Roughness=1 --environment furnace --size 64x64 --out "$out/furnace.pfm"
+"$fxview" render effects/brdf/analytic.fx --preset effects/brdf/presets/gold.json --size 256x256 --out "$out/gold.png"
 # The sweeps of every effect (issue #10) and the film-fit round trip on the NVIDIA driver's GLSL.
 for effect in debug examples/textured brdf/analytic brdf/measured spectral/wavelength spectral/cd spectral/thinfilm; do
   "$fxview" compare "effects/$effect.fx" --sweep --sweep-random 1 --size 24x24 | tail -3 | tee "$out/sweep-$(basename "$effect").txt" || true
