@@ -221,3 +221,40 @@ TEST_CASE("compare --ground-truth: the split sum is exact in uniform light and i
     CHECK(studio["pixels"].get<long>() > 500);
     CHECK(std::filesystem::exists(temp_path("truth-PBR-truth.png")));
 }
+
+TEST_CASE("environment files: equirectangular EXR, six faces and a cube cross light the scene; a wrong shape is named") {
+    const std::string analytic = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/analytic.fx";
+    const std::string white_metal = analytic + " -t PBR --set BaseColor=1,1,1 --set Metallic=1 --set LightIrradiance=0 --set Roughness=0.6 --size 32x32";
+    const auto centre_of = [&](const std::string& environment) {
+        const std::string out = temp_path("file-env.exr");
+        const Result r = run("render " + white_metal + " --environment " + environment + " --out " + out);
+        CAPTURE(r.err);
+        REQUIRE(r.exit_code == 0);
+        return image::read_float_image(out).pixel(16, 16)[1];
+    };
+    const auto uniform_image = [](const std::string& path, int width, int height, float value) {
+        image::FloatImage image(width, height, 4);
+        for (float& v : image.data) v = value;
+        image::write_exr(path, image);
+    };
+    // Uniform radiance 1 from a file is the furnace: a white metal reflects 1 (2 %, as the furnace test).
+    const std::string equirect = temp_path("uniform-equirect.exr");
+    uniform_image(equirect, 64, 32, 1.0f);
+    CHECK(centre_of(equirect) == doctest::Approx(1.0).epsilon(0.02));
+    std::string faces;
+    for (int face = 0; face < 6; ++face) {
+        const std::string path = temp_path("face" + std::to_string(face) + ".exr");
+        uniform_image(path, 8, 8, 0.5f);
+        faces += (face ? "," : "") + path;
+    }
+    CHECK(centre_of(faces) == doctest::Approx(0.5).epsilon(0.02));
+    // The shipped cube cross (8-bit sRGB, decoded to linear) lights and fills the background.
+    const std::string cross = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/../textures/sky_cross.png";
+    CHECK(centre_of(cross) > 0.05);
+    const std::string wrong = temp_path("wrong-shape.exr");
+    uniform_image(wrong, 30, 20, 1.0f);
+    const Result r = run("render " + white_metal + " --environment " + wrong + " --out " + temp_path("x.png"));
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("wrong-shape.exr") != std::string::npos);
+    CHECK(r.err.find("equirectangular") != std::string::npos);
+}
