@@ -25,17 +25,25 @@ vec3 environment_radiance(vec3 world_direction, float roughness) {
     return mix(a, b, lod - l0) * FxEnvironmentIntensity;
 }
 
-// What a white Lambertian surface with normal `world_normal` reflects: irradiance / pi (order-2 SH).
+// What a white Lambertian surface with normal `world_normal` reflects: irradiance / pi (order-2 SH,
+// the sun apart).
 vec3 environment_irradiance(vec3 world_normal) {
     vec3 d = FxEnvironmentRotation * world_normal;
     float basis[9] = float[9](0.282095, 0.488603 * d.y, 0.488603 * d.z, 0.488603 * d.x, 1.092548 * d.x * d.y, 1.092548 * d.y * d.z,
                               0.315392 * (3.0 * d.z * d.z - 1.0), 1.092548 * d.x * d.z, 0.546274 * (d.x * d.x - d.y * d.y));
     vec3 sum = vec3(0.0);
     for (int k = 0; k < 9; ++k) sum += basis[k] * texelFetch(FxEnvironmentIrradiance, ivec2(k, 0), 0).rgb;
-    return max(sum, vec3(0.0)) * FxEnvironmentIntensity;
+    // The sun in closed form (order-2 SH would ring about it): texels 9 and 10, direction and irradiance / pi.
+    vec3 sun = texelFetch(FxEnvironmentIrradiance, ivec2(9, 0), 0).xyz;
+    vec3 sun_irradiance = texelFetch(FxEnvironmentIrradiance, ivec2(10, 0), 0).rgb;
+    return (max(sum, vec3(0.0)) + max(dot(d, sun), 0.0) * sun_irradiance) * FxEnvironmentIntensity;
 }
 
 // The split sum's (A, B): single-scattering GGX reflects F0 A + B of uniform light; and G, with which
 // the diffuse part (1 - F(v·h)) base/π reflects (1 - F0)(1 - G) base of uniform light.
-vec3 environment_dfg(float nv, float roughness) { return texture(FxEnvironmentDfg, vec2(nv, roughness)).xyz; }
+// Texel centres hold n·v and roughness 0, 1/(size-1), ..., 1.
+vec3 environment_dfg(float nv, float roughness) {
+    vec2 size = vec2(textureSize(FxEnvironmentDfg, 0));
+    return texture(FxEnvironmentDfg, (clamp(vec2(nv, roughness), 0.0, 1.0) * (size - 1.0) + 0.5) / size).xyz;
+}
 

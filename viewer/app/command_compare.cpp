@@ -86,7 +86,8 @@ CommandRunner add_compare_command(CLI::App& app) {
     return [options] {
         RenderRequest request = to_render_request(options->scene);
         if (request.effect.path.empty()) throw UsageError("compare needs an effect file");
-        if (request.samples > 1) throw UsageError("compare renders without MSAA: every pixel must come from one fragment");
+        if (options->scene.samples_given.value_or(0) > 1) throw UsageError("compare renders without MSAA: every pixel must come from one fragment");
+        request.samples = 0;  // a preset's MSAA is for pictures, not for comparisons
         std::vector<std::string> techniques;
         if (request.effect.technique.empty()) techniques = technique_names(request.effect);
         else techniques = {request.effect.technique};

@@ -1,5 +1,7 @@
 #include "app/scene_options.hpp"
 
+#include <cmath>
+
 #include "app/value_parsing.hpp"
 #include "core/error.hpp"
 #include "effect/preset.hpp"
@@ -68,11 +70,17 @@ RenderRequest to_render_request(const SceneOptions& o) {
     object.pose.rotation = math::rotation_from_euler_degrees(parse_vec3("--object-rotate", o.object_rotate));
     object.scale = parse_vec3("--object-scale", o.object_scale);
     scene.background = parse_vec4("--background", o.background);
+    const auto finite = [](const char* option, float value) {
+        if (!std::isfinite(value)) throw UsageError(std::string(option) + ": not a finite number");
+        return value;
+    };
     const std::string environment = o.environment.value_or(preset.environment.value_or(""));
     scene.environment.source = environment == "none" ? "" : environment;
-    scene.environment.rotation_degrees = o.environment_rotate.value_or(preset.environment_rotate.value_or(0.0f));
-    scene.environment.intensity = o.environment_intensity.value_or(preset.environment_intensity.value_or(1.0f));
-    request.display.exposure_ev = o.exposure.value_or(preset.exposure.value_or(0.0f));
+    scene.environment.rotation_degrees = finite("--environment-rotate", o.environment_rotate.value_or(preset.environment_rotate.value_or(0.0f)));
+    scene.environment.intensity = finite("--environment-intensity", o.environment_intensity.value_or(preset.environment_intensity.value_or(1.0f)));
+    if (scene.environment.intensity < 0.0f) throw UsageError("--environment-intensity: must be at least 0");
+    request.display.exposure_ev = finite("--exposure", o.exposure.value_or(preset.exposure.value_or(0.0f)));
+    if (std::abs(request.display.exposure_ev) > 30.0f) throw UsageError("--exposure: -30 to 30 EV");
     request.display.tone_map = image::parse_tone_map(o.tone_map.value_or(preset.tone_map.value_or("none")));
     request.effect = o.effect;
     return request;

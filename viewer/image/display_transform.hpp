@@ -4,7 +4,7 @@
 // so a PNG written by `fxview render` matches the window. EXR and PFM files stay scene-linear.
 //   none         clamp to [0, 1] (the old behaviour)
 //   aces         the ACES filmic curve, Stephen Hill's fit of the RRT + sRGB ODT (desaturates highlights)
-//   pbr-neutral  Khronos PBR Neutral (2024): base colours below 0.8 pass unchanged, highlights compress
+//   pbr-neutral  Khronos PBR Neutral (2024): below 0.76 only a toe offset of 0.04 is taken off, highlights compress
 #pragma once
 #include <string>
 

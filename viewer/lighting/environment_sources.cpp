@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <sstream>
 
@@ -67,9 +68,11 @@ Environment make_sky(const Sky& sky, int size) {
             const glm::dvec3 d(std::sin(z) * std::sin(phi), std::cos(z), std::sin(z) * std::cos(phi));
             sky_horizontal += clear_sky(z, std::acos(std::clamp(glm::dot(d, sun), -1.0, 1.0))) * std::cos(z) * std::sin(z) * (kPi / 2 / n) * (kPi / n);
         }
-    const double sun_horizontal = std::max(std::sin(el), 0.02);  // irradiance 1 at normal incidence before scaling
-    const double total = sun_horizontal * 1.25;                   // sun + a quarter of it from the sky
-    const double sun_scale = kPi / total, sky_scale = 0.25 * sun_horizontal * kPi / total / sky_horizontal;
+    // At the default elevation (35 deg) sun and sky light a white horizontal Lambertian surface to 1, the
+    // sky giving a fifth of it (a clear day); the sun keeps that normal irradiance at other elevations,
+    // so a lower sun lights horizontal surfaces less, as outdoors; the sky's horizontal share stays.
+    const double default_sin = std::sin(35.0 * kPi / 180.0);
+    const double sun_scale = 0.8 * kPi / default_sin, sky_scale = 0.2 * kPi / sky_horizontal;
     const double ground_radiance = 0.2 * 1.0;                     // a grey ground of albedo 0.2 under irradiance pi
     Environment environment;
     environment.radiance = tabulate(size, 2, [&](const glm::dvec3& d) {
@@ -193,7 +196,7 @@ Sky parse_sky(const std::string& source) {
     if (source == "sky") return sky;
     const std::vector<std::string> values = split(source.substr(4), ',');
     try {
-        if (values.size() > 2 || values.empty()) throw std::invalid_argument("count");
+        if (values.size() > 2 || values.empty() || source.back() == ',') throw std::invalid_argument("count");
         sky.sun_elevation_degrees = std::stod(values[0]);
         if (values.size() == 2) sky.sun_cct = std::stod(values[1]);
     } catch (const std::exception&) {
@@ -210,7 +213,16 @@ Environment make_environment(const std::string& source, int size) {
     if (source == "studio") return {tabulate(size, 2, studio_radiance), {}};
     if (source == "furnace") return {tabulate(size, 1, [](const glm::dvec3&) { return glm::vec3(1.0f); }), {}};
     if (source == "sky" || source.rfind("sky:", 0) == 0) return make_sky(parse_sky(source), size);
-    return {from_files(source, size), {}};
+    // A bare word that is no file is most likely a misspelt built-in name.
+    std::error_code error;
+    if (source.find_first_of("/.,") == std::string::npos && !std::filesystem::exists(source, error))
+        throw UsageError("unknown environment '" + source + "' (studio, sky, sky:ELEVATION[,CCT], furnace, none, or an image file)");
+    Environment environment{from_files(source, size), {}};
+    for (const auto& face : environment.radiance.faces)
+        for (const glm::vec3& texel : face)
+            if (!std::isfinite(texel.r) || !std::isfinite(texel.g) || !std::isfinite(texel.b) || texel.r < 0 || texel.g < 0 || texel.b < 0)
+                throw Error(source + ": the environment holds NaN, infinite or negative radiance");
+    return environment;
 }
 
 }  // namespace fxview::lighting

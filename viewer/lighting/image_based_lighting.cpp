@@ -127,8 +127,8 @@ PrefilteredEnvironment prefilter(const Environment& environment, int levels, int
         workers.clear();
         out.specular.push_back(std::move(cube));
     }
-    // SH projection with exact texel solid angles (discs in closed form), then the cosine convolution
-    // (Ramamoorthi-Hanrahan).
+    // SH projection with exact texel solid angles, then the cosine convolution (Ramamoorthi-Hanrahan);
+    // the discs apart, in closed form.
     std::array<glm::dvec3, 9> projection{};
     for (int face = 0; face < 6; ++face)
         for (int y = 0; y < radiance.size; ++y)
@@ -137,10 +137,8 @@ PrefilteredEnvironment prefilter(const Environment& environment, int levels, int
                 const double omega = texel_solid_angle(x, y, radiance.size);
                 for (size_t k = 0; k < 9; ++k) projection[k] += basis[k] * omega * glm::dvec3(radiance.at(face, x, y));
             }
-    for (const DiscLight& disc : environment.discs) {
-        const std::array<double, 9> basis = sh_basis(disc.direction);
-        for (size_t k = 0; k < 9; ++k) projection[k] += basis[k] * disc.solid_angle() * disc.radiance;
-    }
+    for (const DiscLight& disc : environment.discs)
+        out.disc_irradiance.emplace_back(glm::vec3(disc.direction), glm::vec3(disc.radiance * disc.solid_angle() / kPi));
     const double band[9] = {kPi, 2 * kPi / 3, 2 * kPi / 3, 2 * kPi / 3, kPi / 4, kPi / 4, kPi / 4, kPi / 4, kPi / 4};
     for (size_t k = 0; k < 9; ++k) out.irradiance[k] = glm::vec3(projection[k] * band[k] / kPi);
     return out;
@@ -153,14 +151,22 @@ glm::dvec3 evaluate_irradiance(const std::array<glm::vec3, 9>& sh, const glm::dv
     return sum;
 }
 
+glm::dvec3 evaluate_irradiance(const PrefilteredEnvironment& environment, const glm::dvec3& n) {
+    glm::dvec3 sum = glm::max(evaluate_irradiance(environment.irradiance, n), glm::dvec3(0.0));
+    for (const auto& [direction, irradiance] : environment.disc_irradiance)
+        sum += std::max(glm::dot(n, glm::dvec3(direction)), 0.0) * glm::dvec3(irradiance);
+    return sum;
+}
+
 DfgTable make_dfg_table(int size, int samples) {
     DfgTable table;
     table.size = size;
     table.data.resize(static_cast<size_t>(size) * size);
     for (int j = 0; j < size; ++j) {
-        const double roughness = (j + 0.5) / size, alpha = roughness * roughness;
+        // Texels at the ends of both ranges, so that n·v = 1 and roughness 1 are tabulated, not clamped.
+        const double roughness = static_cast<double>(j) / (size - 1), alpha = roughness * roughness;
         for (int i = 0; i < size; ++i) {
-            const double nv = (i + 0.5) / size;
+            const double nv = std::max(static_cast<double>(i) / (size - 1), 1e-3);
             const glm::dvec3 v(std::sqrt(1.0 - nv * nv), 0.0, nv);
             double a = 0.0, b = 0.0;
             for (int k = 0; k < samples; ++k) {
@@ -191,7 +197,8 @@ DfgTable make_dfg_table(int size, int samples) {
 }
 
 glm::dvec3 DfgTable::lookup(double nv, double roughness) const {
-    const double x = nv * size - 0.5, y = roughness * size - 0.5;
+    // GL's bilinear filter at (value (size - 1) + ½) / size: texel centres at the tabulated values.
+    const double x = std::clamp(nv, 0.0, 1.0) * (size - 1), y = std::clamp(roughness, 0.0, 1.0) * (size - 1);
     const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
     const double ax = x - x0, ay = y - y0;
     const auto at = [&](int i, int j) {

@@ -22,7 +22,10 @@ namespace fxview::lighting {
 
 struct PrefilteredEnvironment {
     std::vector<FloatCube> specular;      // level k for roughness k / (levels - 1)
-    std::array<glm::vec3, 9> irradiance;  // SH coefficients of E(n) / pi, the cosine-convolved radiance
+    std::array<glm::vec3, 9> irradiance;  // SH coefficients of E(n) / pi, the cosine-convolved radiance (without the discs)
+    // The discs' irradiance in closed form (order-2 SH would ring badly about a low sun): E(n)/pi adds
+    // max(n·direction, 0) times this for each, from their centre direction.
+    std::vector<std::pair<glm::vec3, glm::vec3>> disc_irradiance;  // direction, radiance x solid angle / pi
 };
 
 // `samples` GGX directions per texel of level 1, four times as many on wider lobes (level 0 is the
@@ -31,11 +34,13 @@ PrefilteredEnvironment prefilter(const Environment& environment, int levels, int
 
 // E(n) / π for SH coefficients of prefilter(): the radiance a white Lambertian surface reflects.
 glm::dvec3 evaluate_irradiance(const std::array<glm::vec3, 9>& sh, const glm::dvec3& n);
+// The same with the discs: the SH (at least 0) plus each disc's closed form.
+glm::dvec3 evaluate_irradiance(const PrefilteredEnvironment& environment, const glm::dvec3& n);
 
 struct DfgTable {
-    int size = 0;                 // size x size texels: n·v = (i + ½) / size across, roughness = (j + ½) / size up
+    int size = 0;                 // size x size texels: n·v = i / (size - 1) across, roughness = j / (size - 1) up
     std::vector<glm::vec3> data;  // A, B, G; row j (roughness) first
-    // Bilinear with clamp to edge, as GL samples the texture.
+    // Bilinear between the tabulated values, as GL samples the texture at (value (size - 1) + ½) / size.
     glm::dvec3 lookup(double nv, double roughness) const;
 };
 DfgTable make_dfg_table(int size, int samples = 512);

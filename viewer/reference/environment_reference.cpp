@@ -31,7 +31,7 @@ glm::dvec3 EnvironmentLookup::radiance(const glm::dvec3& world, double roughness
 }
 
 glm::dvec3 EnvironmentLookup::irradiance(const glm::dvec3& n) const {
-    return glm::max(lighting::evaluate_irradiance(maps_->prefiltered().irradiance, rotation_ * n), glm::dvec3(0.0)) * intensity_;
+    return lighting::evaluate_irradiance(maps_->prefiltered(), rotation_ * n) * intensity_;
 }
 
 glm::dvec3 EnvironmentLookup::dfg(double nv, double roughness) const { return maps_->dfg().lookup(nv, roughness); }

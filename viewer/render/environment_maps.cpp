@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include "core/error.hpp"
 #include "gl/texture_upload.hpp"
 #include "lighting/environment_sources.hpp"
 
@@ -69,7 +70,12 @@ EnvironmentMaps::EnvironmentMaps(const std::string& source) : source_(source) {
 
     std::vector<float> sh;
     for (const glm::vec3& c : prefiltered_.irradiance) sh.insert(sh.end(), {c.r, c.g, c.b, 1.0f});
-    texture::TextureData irradiance{texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(9, 1, sh)}}, specular_data_.source + " (SH irradiance)"};
+    // Texels 9 and 10: the one disc (the sun) as direction and irradiance / pi; zero without one.
+    const std::pair<glm::vec3, glm::vec3> disc =
+        prefiltered_.disc_irradiance.empty() ? std::pair{glm::vec3(0.0f), glm::vec3(0.0f)} : prefiltered_.disc_irradiance.front();
+    if (prefiltered_.disc_irradiance.size() > 1) throw Error(source + ": the GPU tables hold one disc light");
+    sh.insert(sh.end(), {disc.first.x, disc.first.y, disc.first.z, 0.0f, disc.second.r, disc.second.g, disc.second.b, 0.0f});
+    texture::TextureData irradiance{texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(11, 1, sh)}}, specular_data_.source + " (SH irradiance)"};
     irradiance_ = upload(irradiance, irradiance.source);
 
     // Rows top first in TextureData; the table's row j (roughness (j + ½) / size) is GL row j from the bottom.

@@ -2,7 +2,8 @@
 // from lighting/ on the CPU and kept there too for the CPU references (docs/effect-format.md,
 // "Environment lighting"):
 //   environment:specular    cube map, RGBA32F, one mip level per roughness step (level 0 the radiance)
-//   environment:irradiance  9x1 RGBA32F: the order-2 SH coefficients of the cosine-convolved radiance / pi
+//   environment:irradiance  11x1 RGBA32F: the order-2 SH coefficients of the cosine-convolved radiance / pi,
+//                           then the sun's direction and irradiance / pi (zero without a sun)
 //   environment:dfg         2D RGBA32F: (A, B, G) of the split sum per (n·v, roughness), clamped at the edges
 // No source: black textures of one texel (an effect samples them and adds nothing).
 #pragma once

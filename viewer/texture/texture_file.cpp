@@ -60,23 +60,19 @@ static void check_png_chunks(const std::string& path, const std::vector<std::uin
 }
 
 TextureData load_stb_image(const std::string& path, const ResourceLimits& limits) {
+    if (lower_extension(path) == ".hdr") return load_hdr(path, limits);  // never stb's HDR decoder (hdr_file.cpp)
     checked_file_size(path, limits);
     std::ifstream file(path, std::ios::binary);
     const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
     if (bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max())) throw Error(path + ": image file too large");
+    // stb would decode a Radiance file whatever its name, with the decoder hdr_file.cpp replaces.
+    if (bytes.size() >= 2 && bytes[0] == '#' && bytes[1] == '?') return load_hdr(path, limits);
     check_png_chunks(path, bytes);
     const auto* data = bytes.data();
     const int size = static_cast<int>(bytes.size());
     int width = 0, height = 0, channels = 0;
-    const bool hdr = lower_extension(path) == ".hdr";
     if (!stbi_info_from_memory(data, size, &width, &height, &channels)) throw Error(path + ": cannot read image: " + stbi_failure_reason());
-    check_image_size(path, width, height, hdr ? 16 : 4, limits);
-    if (hdr) {
-        std::unique_ptr<float, decltype(&stbi_image_free)> pixels(stbi_loadf_from_memory(data, size, &width, &height, &channels, 4),
-                                                                  &stbi_image_free);
-        if (!pixels) throw Error(path + ": cannot read image: " + stbi_failure_reason());
-        return single_level(path, PixelFormat::RGBA32F, width, height, pixels.get());
-    }
+    check_image_size(path, width, height, 4, limits);
     std::unique_ptr<stbi_uc, decltype(&stbi_image_free)> pixels(stbi_load_from_memory(data, size, &width, &height, &channels, 4),
                                                                 &stbi_image_free);
     if (!pixels) throw Error(path + ": cannot read image: " + stbi_failure_reason());
@@ -117,7 +113,8 @@ TextureData load_texture_file(const std::string& path, const ResourceLimits& lim
     if (extension == ".dds") return load_dds(path, limits);
     if (extension == ".ftxt") return load_ftxt(path, limits);
     if (extension == ".exr") return load_exr_texture(path, limits);
-    for (const char* known : {".png", ".jpg", ".jpeg", ".bmp", ".tga", ".hdr"})
+    if (extension == ".hdr") return load_hdr(path, limits);
+    for (const char* known : {".png", ".jpg", ".jpeg", ".bmp", ".tga"})
         if (extension == known) return load_stb_image(path, limits);
     throw Error(path + ": unsupported texture type '" + excerpt(extension) +
                 "' (expected .png, .jpg, .bmp, .tga, .hdr, .exr, .dds or .ftxt)");

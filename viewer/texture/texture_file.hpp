@@ -1,5 +1,5 @@
 // Loading texture files into TextureData, chosen by extension:
-//   .png .jpg .jpeg .bmp .tga  through stb_image (RGBA8)      .hdr through stb_image (RGBA32F)
+//   .png .jpg .jpeg .bmp .tga  through stb_image (RGBA8)      .hdr our own reader (RGBA32F; hdr_file.cpp)
 //   .exr through tinyexr (RGBA32F)                           .dds (see dds_file.cpp)
 //   .ftxt, the float text format of the original ShaderViewer (see ftxt_file.cpp)
 // Every failure throws fxview::Error naming the file (and line, for text formats).
@@ -17,6 +17,7 @@ TextureData load_texture_file(const std::string& path, const ResourceLimits& lim
 
 TextureData load_stb_image(const std::string& path, const ResourceLimits& limits = {});
 TextureData load_exr_texture(const std::string& path, const ResourceLimits& limits = {});
+TextureData load_hdr(const std::string& path, const ResourceLimits& limits = {});  // Radiance RGBE (hdr_file.cpp)
 TextureData load_dds(const std::string& path, const ResourceLimits& limits = {});
 TextureData load_ftxt(const std::string& path, const ResourceLimits& limits = {});
 

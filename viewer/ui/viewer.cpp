@@ -567,7 +567,7 @@ private:
         const char* tone_maps[] = {"none (clip)", "ACES filmic (Hill's fit)", "Khronos PBR Neutral"};
         int tone_map = static_cast<int>(display_settings_.tone_map);
         if (ImGui::Combo("tone mapping", &tone_map, tone_maps, 3)) display_settings_.tone_map = static_cast<image::ToneMap>(tone_map);
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("PBR Neutral keeps base colours below 0.8 as they are and compresses highlights");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("PBR Neutral keeps colours below 0.76 (less a toe offset of 0.04) and compresses highlights");
         if (ImGui::Button("Fullscreen (F11)")) toggle_fullscreen();
         ImGui::Separator();
         ImGui::InputInt2("screenshot size", &shot_size_.x);
