@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <vector>
 #include <numbers>
 
 #include <nlohmann/json.hpp>
@@ -257,4 +259,40 @@ TEST_CASE("environment files: equirectangular EXR, six faces and a cube cross li
     CHECK(r.exit_code == 1);
     CHECK(r.err.find("wrong-shape.exr") != std::string::npos);
     CHECK(r.err.find("equirectangular") != std::string::npos);
+}
+
+TEST_CASE("Radiance .hdr files: read exactly; truncated or malformed ones are errors naming the file, never a hang") {
+    const auto write = [](const std::string& path, const std::string& header, const std::vector<std::uint8_t>& pixels) {
+        std::ofstream file(path, std::ios::binary);
+        file << header;
+        file.write(reinterpret_cast<const char*>(pixels.data()), static_cast<std::streamsize>(pixels.size()));
+    };
+    const std::string header = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 16\n";
+    // Run-length scanlines: each channel a run of 16 equal bytes; RGBE (128, 64, 32, 129) = (1, 0.5, 0.25).
+    std::vector<std::uint8_t> rle;
+    for (int row = 0; row < 2; ++row) {
+        rle.insert(rle.end(), {2, 2, 0, 16});
+        for (const std::uint8_t value : {128, 64, 32, 129}) rle.insert(rle.end(), {static_cast<std::uint8_t>(128 + 16), value});
+    }
+    const std::string good = temp_path("good.hdr");
+    write(good, header, rle);
+    const texture::TextureData t = texture::load_texture_file(good);
+    float rgba[4];
+    texture::read_texel(t, 0, 0, 15, 1, rgba);
+    CHECK(rgba[0] == 1.0f);  // exact powers of two
+    CHECK(rgba[1] == 0.5f);
+    CHECK(rgba[2] == 0.25f);
+    // Cut inside the second scanline's runs (Debian's stb loops forever here: CVE-2021-42715).
+    const std::string cut = temp_path("cut.hdr");
+    write(cut, header, std::vector<std::uint8_t>(rle.begin(), rle.begin() + 16));
+    CHECK_THROWS_WITH(texture::load_texture_file(cut), doctest::Contains("truncated"));
+    // Flat pixels, fewer than the size says.
+    const std::string flat = temp_path("flat.hdr");
+    write(flat, "#?RADIANCE\n\n-Y 4 +X 4\n", std::vector<std::uint8_t>(40, 128));
+    CHECK_THROWS_WITH(texture::load_texture_file(flat), doctest::Contains("flat.hdr"));
+    // The same as an environment on the command line: exit 1 naming it.
+    const Result r = run("render --environment " + cut + " " + std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/analytic.fx --size 8x8 --out " +
+                         temp_path("x.png"));
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("cut.hdr") != std::string::npos);
 }

@@ -70,7 +70,7 @@ GLSLShader LambertFS {
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? BaseColor / kPi : vec3(0.0));
-        if (f.nv > 0.0) color.rgb += BaseColor * environment_irradiance(f.n);
+        color.rgb += BaseColor * environment_irradiance(environment_facing_normal(f.n, f.v));
         fx_capture();
     }
 }

@@ -13,6 +13,14 @@ uniform sampler2D FxEnvironmentIrradiance = sampler_state { Texture = <FxEnviron
 texture FxEnvironmentDfgTexture < string ResourceName = "environment:dfg"; >;
 uniform sampler2D FxEnvironmentDfg = sampler_state { Texture = <FxEnvironmentDfgTexture>; MinFilter = Linear; MagFilter = Linear; AddressU = Clamp; AddressV = Clamp; };
 
+// The shading normal bent towards the eye where interpolation turned it away (n·v <= 0 at a
+// silhouette), so that the environment's light does not leave black dots against the background:
+// n·v becomes at least 0.01.
+vec3 environment_facing_normal(vec3 n, vec3 v) {
+    float nv = dot(n, v);
+    return nv >= 0.01 ? n : normalize(n + (0.01 - nv) * v);
+}
+
 // The environment's radiance towards `world_direction`, blurred by a GGX lobe of `roughness`
 // (prefiltered levels k / (levels - 1), linear between two).
 vec3 environment_radiance(vec3 world_direction, float roughness) {

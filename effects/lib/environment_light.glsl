@@ -36,7 +36,12 @@ float environment_filter_roughness(float pdf) {
 }
 
 vec3 environment_light(vec3 n, vec3 v, vec3 x, vec3 y, float alpha) {
-    if (FxEnvironmentIntensity <= 0.0 || dot(n, v) <= 0.0) return vec3(0.0);
+    if (FxEnvironmentIntensity <= 0.0) return vec3(0.0);
+    if (dot(n, v) < 0.01) {  // a silhouette: the normal bent towards the eye, the frame with it
+        n = environment_facing_normal(n, v);
+        x = normalize(x - n * dot(n, x));
+        y = cross(n, x);
+    }
     vec3 sum = vec3(0.0);
     for (int i = 0; i < kFxEnvironmentSamples; ++i) {
         float pdf;

@@ -19,9 +19,12 @@ vec3 specular_dominant_direction(Frame f, float roughness) {
 
 // Metallic-roughness GGX (brdf.glsl's metallic_roughness) lit by the environment: the specular split
 // sum scaled by 1 + F0 (1/E - 1) for multiple scattering (E = A + B, Fdez-Agüera 2019), and the
-// diffuse part by what it reflects of uniform light, (1 - F0)(1 - G). Black where the eye is below the surface.
+// diffuse part by what it reflects of uniform light, (1 - F0)(1 - G); at silhouettes with the normal
+// bent towards the eye (environment_facing_normal).
 vec3 metallic_roughness_environment(Frame f, vec3 base, float metallic, float roughness) {
-    if (f.nv <= 0.0) return vec3(0.0);
+    vec3 n = environment_facing_normal(f.n, f.v);
+    f.n = n;
+    f.nv = dot(n, f.v);
     vec3 f0 = mix(vec3(0.04), base, metallic);
     vec3 ab = environment_dfg(f.nv, roughness);
     vec3 compensation = EnergyCompensation ? 1.0 + f0 * (1.0 / max(ab.x + ab.y, 1e-4) - 1.0) : vec3(1.0);

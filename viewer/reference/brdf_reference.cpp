@@ -208,7 +208,7 @@ Reference with_environment(Reference point_light, EnvironmentTerm term, Environm
 }
 
 glm::dvec3 lambert_environment(const EnvironmentLookup& environment, const brdf::Directions& d, const ReferenceContext& c, double*) {
-    return glm::dot(d.n, d.v) > 0.0 ? lambert(c).albedo * environment.irradiance(d.n) : glm::dvec3(0.0);
+    return lambert(c).albedo * environment.irradiance(environment_facing(d).n);
 }
 
 glm::dvec3 pbr_environment(const EnvironmentLookup& environment, const brdf::Directions& d, const ReferenceContext& c, double* seam) {
@@ -224,7 +224,7 @@ glm::dvec3 pbr_truth(const EnvironmentLookup& environment, const brdf::Direction
     const brdf::MetallicRoughness model = pbr(c);
     const bool compensation = c.number("EnergyCompensation") != 0.0;
     const auto f = [&](const glm::dvec3& l) {
-        brdf::Directions at = d;
+        brdf::Directions at = environment_facing(d);
         at.l = l;
         return metallic_roughness_compensated(environment, at, model, compensation);
     };
@@ -237,7 +237,7 @@ template <typename ModelFrom, typename AlphaFrom>
 Reference sampled_environment(ModelFrom model_from, AlphaFrom alpha_from) {
     const auto value_towards = [model_from](const ReferenceContext& c, const brdf::Directions& d) {
         return [model = model_from(c), d](const glm::dvec3& l) {
-            brdf::Directions at = d;
+            brdf::Directions at = environment_facing(d);  // as environment_light.glsl shades a silhouette
             at.l = l;
             return brdf::evaluate(model, at);
         };

@@ -9,10 +9,9 @@
 namespace fxview::reference {
 
 template <typename Brdf>
-glm::dvec3 EnvironmentLookup::light(const brdf::Directions& d, const Brdf& f, double alpha, double* seam) const {
+glm::dvec3 EnvironmentLookup::light(const brdf::Directions& facing, const Brdf& f, double alpha, double* seam) const {
     constexpr int kSamples = 32;
-    const double nv = glm::dot(d.n, d.v);
-    if (nv <= 0.0) return glm::dvec3(0.0);
+    const brdf::Directions d = environment_facing(facing);
     const glm::dvec3 x = d.t, y = glm::cross(d.n, d.t);
     glm::dvec3 sum(0.0);
     double spread = 0.0;
@@ -47,9 +46,8 @@ glm::dvec3 EnvironmentLookup::light(const brdf::Directions& d, const Brdf& f, do
 }
 
 template <typename Brdf>
-glm::dvec3 EnvironmentLookup::integral(const brdf::Directions& d, const Brdf& f, double alpha, int samples, unsigned seed) const {
-    const double nv = glm::dot(d.n, d.v);
-    if (nv <= 0.0) return glm::dvec3(0.0);
+glm::dvec3 EnvironmentLookup::integral(const brdf::Directions& facing, const Brdf& f, double alpha, int samples, unsigned seed) const {
+    const brdf::Directions d = environment_facing(facing);  // the normal the techniques shade with
     const glm::dvec3 t = d.t, b = glm::cross(d.n, d.t);
     // A per-pixel turn of the point set (Cranley-Patterson), so that pixels do not share one pattern.
     const auto hash = [](unsigned x) {

@@ -58,6 +58,15 @@ glm::dvec3 EnvironmentLookup::discs(const brdf::Directions& d, const std::functi
     return sum;
 }
 
+brdf::Directions environment_facing(const brdf::Directions& d) {
+    const double nv = glm::dot(d.n, d.v);
+    if (nv >= 0.01) return d;
+    brdf::Directions bent = d;
+    bent.n = glm::normalize(d.n + (0.01 - nv) * d.v);
+    bent.t = glm::normalize(d.t - bent.n * glm::dot(bent.n, d.t));
+    return bent;
+}
+
 glm::dvec3 metallic_roughness_compensated(const EnvironmentLookup& environment, const brdf::Directions& d, const brdf::MetallicRoughness& m,
                                           bool compensation) {
     if (glm::dot(d.n, d.l) <= 0.0 || glm::dot(d.n, d.v) <= 0.0) return glm::dvec3(0.0);
@@ -71,10 +80,10 @@ glm::dvec3 metallic_roughness_compensated(const EnvironmentLookup& environment, 
     return diffuse + (f - diffuse) * (1.0 + f0 * (1.0 / std::max(ab.x + ab.y, 1e-4) - 1.0));
 }
 
-glm::dvec3 metallic_roughness_environment(const EnvironmentLookup& environment, const brdf::Directions& d, const brdf::MetallicRoughness& m,
+glm::dvec3 metallic_roughness_environment(const EnvironmentLookup& environment, const brdf::Directions& facing, const brdf::MetallicRoughness& m,
                                           bool compensation, double* seam) {
+    const brdf::Directions d = environment_facing(facing);
     const double nv = glm::dot(d.n, d.v);
-    if (nv <= 0.0) return glm::dvec3(0.0);
     const glm::dvec3 f0 = glm::mix(glm::dvec3(0.04), m.base_color, m.metallic);
     const glm::dvec3 ab = environment.dfg(nv, m.roughness);
     const glm::dvec3 scale = compensation ? 1.0 + f0 * (1.0 / std::max(ab.x + ab.y, 1e-4) - 1.0) : glm::dvec3(1.0);

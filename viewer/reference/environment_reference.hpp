@@ -40,6 +40,10 @@ private:
     double intensity_ = 0.0;
 };
 
+// environment_facing_normal() of environment.glsl: at a silhouette (n·v < 0.01) the frame with its
+// normal bent towards the eye, n·v then about 0.01; else `d` itself.
+brdf::Directions environment_facing(const brdf::Directions& d);
+
 // The metallic-roughness BRDF the environment term stands for: brdf.glsl's metallic_roughness with
 // its specular part scaled by the multiple-scattering compensation 1 + F0 (1/E(n·v) - 1) when on.
 glm::dvec3 metallic_roughness_compensated(const EnvironmentLookup& environment, const brdf::Directions& d, const brdf::MetallicRoughness& m,
