@@ -60,7 +60,8 @@ PresetScene load_preset_scene(const std::string& path, const ResourceLimits& lim
     const nlohmann::json& s = json["scene"];
     if (!s.is_object()) throw Error(line_of(path, text, "scene") + "\"scene\" must be an object");
     for (const auto& [key, value] : s.items()) {
-        const auto bad = [&](const char* what) { return Error(line_of(path, text, key) + "scene \"" + key + "\" must be " + what); };
+        const std::string name = key;  // a structured binding cannot be captured before C++20's clang 16
+        const auto bad = [&](const char* what) { return Error(line_of(path, text, name) + "scene \"" + name + "\" must be " + what); };
         if (key == "environment") {
             if (!value.is_string()) throw bad("a string");
             scene.environment = value.get<std::string>();
