@@ -159,6 +159,17 @@ FloatCube from_files(const std::string& source, int size) {
 
 double DiscLight::solid_angle() const { return 2.0 * kPi * (1.0 - std::cos(angular_radius)); }
 
+std::array<glm::dvec3, 19> DiscLight::quadrature(const glm::dvec3& centre) const {
+    const glm::dvec3 up = std::abs(centre.y) < 0.999 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+    const glm::dvec3 dt = glm::normalize(glm::cross(up, centre)), db = glm::cross(centre, dt);
+    std::array<glm::dvec3, 19> points;
+    for (int k = 0; k < 19; ++k) {
+        const double ring = k == 0 ? 0.0 : k <= 6 ? 0.45 : 0.85, angle = 2 * kPi * (k % 12) / (k <= 6 ? 6.0 : 12.0);
+        points[static_cast<size_t>(k)] = glm::normalize(centre + std::tan(ring * angular_radius) * (std::cos(angle) * dt + std::sin(angle) * db));
+    }
+    return points;
+}
+
 FloatCube Environment::radiance_with_discs() const {
     if (discs.empty()) return radiance;
     FloatCube out = radiance;

@@ -9,6 +9,7 @@
 //                     a cube-map .dds, or six face images F1,F2,...,F6 in the order +X -X +Y -Y +Z -Z
 // Errors (unknown name, unreadable file, wrong shape) throw fxview::Error naming the source.
 #pragma once
+#include <array>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,9 @@ struct DiscLight {
     double angular_radius = 0.0;          // radians
     glm::dvec3 radiance{0.0};             // uniform over the disc
     double solid_angle() const;
+    // 19 directions of equal weight over the disc centred on `centre` (the direction, or it turned
+    // into another frame): the centre and rings at 0.45 and 0.85 of the radius (6 and 12 points).
+    std::array<glm::dvec3, 19> quadrature(const glm::dvec3& centre) const;
 };
 
 struct Environment {

@@ -74,6 +74,8 @@ PrefilteredEnvironment prefilter(const Environment& environment, int levels, int
     const FloatCube full = environment.radiance_with_discs();
     out.specular.push_back(full);
     const double texel_angle = 4.0 * kPi / (6.0 * radiance.size * radiance.size);
+    std::vector<std::array<glm::dvec3, 19>> disc_points;  // the same for every texel and level
+    for (const DiscLight& disc : environment.discs) disc_points.push_back(disc.quadrature(disc.direction));
     for (int level = 1; level < levels; ++level) {
         const double roughness = static_cast<double>(level) / (levels - 1), alpha = roughness * roughness;
         FloatCube cube(std::max(1, radiance.size >> level));
@@ -107,17 +109,13 @@ PrefilteredEnvironment prefilter(const Environment& environment, int levels, int
                         // (n = v = r), whose total the samples estimate as weight / count; w over the
                         // disc by 19 points (centre and two rings).
                         glm::dvec3 discs(0.0);
-                        for (const DiscLight& disc : environment.discs) {
-                            glm::dvec3 dt, db;
-                            frame(disc.direction, dt, db);
+                        for (size_t k = 0; k < environment.discs.size(); ++k) {
                             double w = 0.0;
-                            for (int k = 0; k < 19; ++k) {
-                                const double ring = k == 0 ? 0.0 : k <= 6 ? 0.45 : 0.85, angle = 2 * kPi * (k % 12) / (k <= 6 ? 6.0 : 12.0);
-                                const glm::dvec3 l = glm::normalize(disc.direction + std::tan(ring * disc.angular_radius) *
-                                                                                         (std::cos(angle) * dt + std::sin(angle) * db));
+                            for (const glm::dvec3& l : disc_points[k]) {
                                 const double nl = glm::dot(n, l);
                                 if (nl > 0.0) w += ggx_d(glm::dot(n, glm::normalize(n + l)), alpha) / 4.0 * nl / 19.0;
                             }
+                            const DiscLight& disc = environment.discs[k];
                             discs += disc.radiance * disc.solid_angle() * w;
                         }
                         const double total = weight / count;

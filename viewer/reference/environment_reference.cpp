@@ -44,13 +44,7 @@ glm::dvec3 EnvironmentLookup::discs(const brdf::Directions& d, const std::functi
     glm::dvec3 sum(0.0);
     const glm::dmat3 to_world = glm::transpose(rotation_);  // rotations: the inverse is the transpose
     for (const lighting::DiscLight& disc : maps_->unfiltered().discs) {
-        const glm::dvec3 centre = to_world * disc.direction;
-        const glm::dvec3 up = std::abs(centre.y) < 0.999 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
-        const glm::dvec3 dt = glm::normalize(glm::cross(up, centre)), db = glm::cross(centre, dt);
-        // 19 points of equal weight: the centre and rings at 0.45 and 0.85 of the radius (6 and 12 points).
-        for (int k = 0; k < 19; ++k) {
-            const double ring = k == 0 ? 0.0 : k <= 6 ? 0.45 : 0.85, angle = 2 * std::numbers::pi * (k % 12) / (k <= 6 ? 6.0 : 12.0);
-            const glm::dvec3 l = glm::normalize(centre + std::tan(ring * disc.angular_radius) * (std::cos(angle) * dt + std::sin(angle) * db));
+        for (const glm::dvec3& l : disc.quadrature(to_world * disc.direction)) {
             const double nl = glm::dot(d.n, l);
             if (nl > 0.0) sum += f(l) * nl * disc.radiance * intensity_ * disc.solid_angle() / 19.0;
         }
