@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "core/text.hpp"
 #include "app/effect_options.hpp"
 #include "context/context.hpp"
 #include "effect/effect_program.hpp"
@@ -22,9 +23,16 @@ void print_error(const std::string& message) {
 
 // Checks one effect; returns the number of problems found. Nothing a file does stops the check of
 // the next file: every exception is reported against the file it came from.
-int check_effect(const std::string& path, const effect::LoadOptions& load_options) {
+int check_effect(const std::string& path, const effect::LoadOptions& load_options, bool dump) {
     try {
         const effect::Effect effect = effect::load_effect(path, load_options);
+        if (dump)
+            for (const auto& technique : effect.techniques)
+                for (const auto& pass : technique.passes)
+                    for (const auto& [stage, name] : pass.shaders)
+                        std::cout << "// ---- " << path << ": technique " << technique.name << ", pass " << pass.name << ", "
+                                  << effect::stage_name(stage) << " stage\n" << effect::assemble_stage(effect, pass, stage) << "\n";
+        for (const auto& warning : effect.warnings) std::cout << excerpt(warning, 4000) << "\n";
         int broken = 0;
         std::string compile_errors;  // every technique's, folded where they repeat (shared code)
         for (const auto& technique : effect.techniques) {
@@ -38,6 +46,7 @@ int check_effect(const std::string& path, const effect::LoadOptions& load_option
         if (!compile_errors.empty()) print_error(effect::fold_repeated_messages(compile_errors));
         try {  // textures: every file found, readable, allowed and of the declared shape
             render::EffectResources resources(effect, effect::default_values(effect), texture_folders());
+            for (const auto& warning : resources.warnings()) std::cout << excerpt(warning, 4000) << "\n";
         } catch (const effect::EffectError& error) {
             print_error(error.what());
             ++broken;
@@ -70,6 +79,7 @@ CommandRunner add_check_command(CLI::App& app) {
     struct Options {
         std::vector<std::string> paths;
         std::string backend = "egl";
+        bool dump = false;
         AccessOptions access;
     };
     auto options = std::make_shared<Options>();
@@ -77,6 +87,7 @@ CommandRunner add_check_command(CLI::App& app) {
         "check", "Parse effects and compile every technique; print each error as file:line: message");
     command->add_option("effects", options->paths, "Effect files (each is checked and reported)")->required();
     command->add_option("--backend", options->backend, "GL context used to compile")->capture_default_str();
+    command->add_flag("--dump", options->dump, "Print the GLSL of every stage as it goes to the driver (translated, for Cg/HLSL effects)");
     add_access_options(*command, options->access);
     return [options] {
         const effect::LoadOptions load_options = effect_load_options(options->access);
@@ -85,7 +96,7 @@ CommandRunner add_check_command(CLI::App& app) {
         context_options.window_visible = false;
         const auto context = context::create_context(context_options);
         int failed_files = 0;
-        for (const auto& path : options->paths) failed_files += check_effect(path, load_options) > 0 ? 1 : 0;
+        for (const auto& path : options->paths) failed_files += check_effect(path, load_options, options->dump) > 0 ? 1 : 0;
         if (options->paths.size() > 1)
             std::cout << options->paths.size() - static_cast<size_t>(failed_files) << " of " << options->paths.size() << " effects ok\n";
         return failed_files == 0 ? 0 : 1;

@@ -1,9 +1,12 @@
 #include "app/effect_options.hpp"
 
+#include <iostream>
+
 #include <cstdlib>
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "core/text.hpp"
 #include "effect/preset.hpp"
 #include "spectral/library.hpp"
 
@@ -26,6 +29,9 @@ void add_access_options(CLI::App& command, AccessOptions& options) {
     std::string names;
     for (const auto& info : limit_infos()) names += (names.empty() ? "" : ", ") + std::string(info.name);
     command.add_option("--limit", options.limits, "Change a resource budget NAME=VALUE (" + names + "; K/M/G suffixes)");
+    command.add_option("--matrix-convention", options.matrix_convention,
+                       "Cg/HLSL effects: row (DirectX, mul(v, M)) or column (OpenGL, mul(M, v)) instead of what the file says or does")
+        ->check(CLI::IsMember({"row", "column"}));
 }
 
 ResourceLimits resource_limits(const AccessOptions& options) {
@@ -48,6 +54,7 @@ effect::LoadOptions effect_load_options(const AccessOptions& access) {
         options.access.allow_folder(folder);
     }
     options.limits = resource_limits(access);
+    options.matrix_convention = access.matrix_convention;
     // Spectrum parameters (UIItems = "spectral:library") list the library's names, so that
     // `--set LightSpectrum=D65` works; a missing or broken library only leaves them as numbers.
     try {
@@ -72,6 +79,7 @@ effect::LoadOptions effect_load_options(const EffectOptions& options) {
 
 std::unique_ptr<render::EffectSession> open_effect_session(const EffectOptions& options) {
     auto session = std::make_unique<render::EffectSession>(options.path, effect_load_options(options), texture_folders());
+    for (const auto& warning : session->warnings()) std::cerr << excerpt(warning, 4000) << "\n";
     if (!options.technique.empty()) session->select_technique(options.technique);
     if (!options.preset.empty()) {
         const effect::Preset preset = effect::load_preset(options.preset, session->effect(), session->values());

@@ -16,6 +16,7 @@ namespace fxview::app {
 struct AccessOptions {
     std::vector<std::string> allow_paths;
     std::vector<std::string> limits;
+    std::string matrix_convention;  // Cg/HLSL effects: "row", "column" or empty (docs/legacy-effects.md)
 };
 void add_access_options(CLI::App& command, AccessOptions& options);
 // The budgets with every --limit applied; UsageError for an unknown name or a bad value.

@@ -2,6 +2,7 @@
 // semantics, named GLSL shader blocks, and techniques made of passes with render states.
 // Parsing produces it; effect_program.hpp compiles it.
 #pragma once
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -81,10 +82,33 @@ struct Parameter {
     SourceLocation where;
 };
 
+// A uniform block of a translated (Cg/HLSL) stage: where each parameter sits in it, as SPIRV-Cross
+// reflects the std140 layout of the `$Global` constant buffer.
+struct UniformBlockMember {
+    std::string parameter;  // the effect parameter it holds
+    enum class Kind { Float, Int, UInt } kind = Kind::Float;
+    std::uint32_t offset = 0;
+    int vector_size = 1, columns = 1;  // SPIR-V's view: a matrix is `columns` vectors of `vector_size`
+    int array_size = 0;                // 0: not an array
+    std::uint32_t array_stride = 0, matrix_stride = 0;
+    bool row_major = false;
+};
+struct UniformBlockLayout {
+    std::uint32_t binding = 0;
+    std::uint32_t size = 0;
+    std::vector<UniformBlockMember> members;
+};
+
 struct ShaderBlock {
     std::string name;
     std::string code;  // GLSL with #line directives
     SourceLocation where;
+    // Stages translated from Cg/HLSL (viewer/legacy) are complete GLSL programs whose parameters sit
+    // in a uniform block; a stage that failed to translate keeps its messages (file:line each) so that
+    // only its technique fails, as a native technique whose GLSL does not compile.
+    bool complete = false;
+    std::optional<UniformBlockLayout> uniform_block;
+    std::string translation_errors;
 };
 
 struct Pass {
@@ -133,6 +157,13 @@ struct Effect {
     // much: textures and data files are loaded under the same rules as its includes.
     FileAccessPolicy access;
     ResourceLimits limits;
+    // Legacy (Cg/HLSL) effects: how their matrices multiply vectors. Row vectors (`mul(v, M)`,
+    // DirectX) get every matrix transposed from fxview's column-vector convention.
+    bool legacy = false;
+    bool row_vectors = false;
+    // Things the loader could not honour but that do not stop the effect (unknown render states,
+    // skipped DX10 techniques, missing textures replaced by placeholders), each "file:line: message".
+    std::vector<std::string> warnings;
 
     const Parameter* find_parameter(const std::string& name) const;
     const ShaderBlock* find_shader(const std::string& name) const;

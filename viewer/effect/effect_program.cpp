@@ -1,6 +1,7 @@
 #include "effect/effect_program.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <map>
 #include <sstream>
 #include <vector>
@@ -23,6 +24,8 @@ GLenum gl_stage(ShaderStage stage) {
 }  // namespace
 
 std::string assemble_stage(const Effect& effect, const Pass& pass, ShaderStage stage) {
+    const ShaderBlock* block = effect.find_shader(pass.shaders.at(stage));
+    if (block->complete) return block->code;
     std::string source = "#version 450 core\n";
     for (const auto& p : effect.parameters) {
         source += effect.sources.line_directive(p.where);
@@ -80,6 +83,16 @@ CompiledTechnique compile_technique(const Effect& effect, const Technique& techn
             stages.push_back({gl_stage(stage), assemble_stage(effect, pass, stage), name});
         CompiledPass compiled_pass;
         compiled_pass.pass = &pass;
+        compiled_pass.row_vectors = effect.row_vectors;
+        // A translated stage that failed to translate fails its technique with the translator's messages.
+        std::string translation;
+        for (const auto& [stage, name] : pass.shaders) translation += effect.find_shader(name)->translation_errors;
+        if (!translation.empty()) {
+            std::istringstream lines(translation);
+            for (std::string line; std::getline(lines, line);)
+                if (!line.empty()) errors += line + " [technique " + technique.name + ", pass " + pass.name + "]\n";
+            continue;
+        }
         try {
             compiled_pass.program = gl::link_program(stages);
         } catch (const gl::ShaderError& error) {
@@ -109,6 +122,8 @@ CompiledTechnique compile_technique(const Effect& effect, const Technique& techn
             name.resize(name.find('\0') == std::string::npos ? name.size() : name.find('\0'));
             if (const size_t bracket = name.find('['); bracket != std::string::npos) name.resize(bracket);
             const Parameter* parameter = effect.find_parameter(name);
+            // SPIRV-Cross prefixes names that are reserved in GLSL with '_'.
+            if (!parameter && effect.legacy && name.size() > 1 && name[0] == '_') parameter = effect.find_parameter(name.substr(1));
             if (!parameter)
                 throw EffectError(pass.where, "pass " + pass.name + ": uniform '" + name +
                                                   "' is declared inside a shader block; declare it at the top level of the effect");
@@ -123,13 +138,91 @@ CompiledTechnique compile_technique(const Effect& effect, const Technique& techn
             }
             compiled_pass.uniforms.push_back(uniform);
         }
+        for (const auto& [stage, name] : pass.shaders) {
+            const ShaderBlock* block = effect.find_shader(name);
+            if (!block->uniform_block) continue;
+            BoundUniformBlock bound;
+            bound.layout = &*block->uniform_block;
+            for (const auto& member : bound.layout->members) bound.parameters.push_back(effect.find_parameter(member.parameter));
+            bound.buffer = gl::create_buffer();
+            glNamedBufferData(bound.buffer.get(), std::max<GLsizeiptr>(16, bound.layout->size), nullptr, GL_DYNAMIC_DRAW);
+            compiled_pass.blocks.push_back(std::move(bound));
+        }
         compiled.passes.push_back(std::move(compiled_pass));
     }
     if (!errors.empty()) throw EffectError(technique.where, errors, EffectError::Lines{});
     return compiled;
 }
 
+namespace {
+
+// A parameter's current value as floats in fxview's convention (matrices column-major), or empty.
+std::vector<float> current_value(const Parameter& p, const ParameterValues& values, const FrameContext& frame, int components) {
+    if (!p.semantic.empty()) {
+        std::vector<float> data = semantic_value(p.semantic, frame, components);
+        data.resize(static_cast<size_t>(components));
+        return data;
+    }
+    const auto found = values.numbers.find(p.name);
+    if (found == values.numbers.end()) return {};
+    return {found->second.begin(), found->second.end()};
+}
+
+}  // namespace
+
+std::vector<std::byte> pack_uniform_block(const UniformBlockLayout& layout, const std::vector<const Parameter*>& parameters,
+                                          const ParameterValues& values, const FrameContext& frame, bool row_vectors) {
+    std::vector<std::byte> bytes(layout.size);
+    auto put = [&](std::uint32_t offset, float value, UniformBlockMember::Kind kind) {
+        if (offset + 4 > bytes.size()) return;
+        if (kind == UniformBlockMember::Kind::Float) {
+            std::memcpy(bytes.data() + offset, &value, 4);
+        } else if (kind == UniformBlockMember::Kind::Int) {
+            const std::int32_t i = static_cast<std::int32_t>(std::clamp(value, -2147483648.0f, 2147483520.0f));
+            std::memcpy(bytes.data() + offset, &i, 4);
+        } else {
+            const std::uint32_t u = static_cast<std::uint32_t>(std::clamp(value, 0.0f, 4294967040.0f));
+            std::memcpy(bytes.data() + offset, &u, 4);
+        }
+    };
+    for (size_t m = 0; m < layout.members.size(); ++m) {
+        const UniformBlockMember& member = layout.members[m];
+        const Parameter* p = parameters[m];
+        if (!p) continue;
+        const int components = component_count(p->type);
+        if (components == 0) continue;
+        const int count = std::max(1, member.array_size);
+        const std::vector<float> data = current_value(*p, values, frame, components);
+        if (data.size() < static_cast<size_t>(components)) continue;
+        for (int element = 0; element < count && static_cast<size_t>((element + 1) * components) <= data.size(); ++element) {
+            const float* v = data.data() + element * components;
+            const std::uint32_t base = member.offset + static_cast<std::uint32_t>(element) * member.array_stride;
+            if (member.columns == 1) {
+                for (int k = 0; k < std::min(member.vector_size, components); ++k) put(base + 4u * static_cast<std::uint32_t>(k), v[k], member.kind);
+                continue;
+            }
+            // Our matrix M (column-major, n x n) and SPIR-V's S: glslang gives an HLSL matrix's rows
+            // as S's columns, so S = M^T of the HLSL matrix. Row-vector files hold H = M^T (S = M),
+            // column-vector files H = M (S = M^T).
+            const int n = components == 16 ? 4 : components == 9 ? 3 : 2;
+            for (int r = 0; r < member.vector_size && r < n; ++r)
+                for (int c = 0; c < member.columns && c < n; ++c) {
+                    const float s = row_vectors ? v[c * n + r] : v[r * n + c];
+                    const std::uint32_t at = member.row_major ? base + static_cast<std::uint32_t>(r) * member.matrix_stride + 4u * static_cast<std::uint32_t>(c)
+                                                              : base + static_cast<std::uint32_t>(c) * member.matrix_stride + 4u * static_cast<std::uint32_t>(r);
+                    put(at, s, member.kind);
+                }
+        }
+    }
+    return bytes;
+}
+
 void bind_uniforms(const CompiledPass& pass, const ParameterValues& values, const FrameContext& frame) {
+    for (const auto& block : pass.blocks) {
+        const std::vector<std::byte> bytes = pack_uniform_block(*block.layout, block.parameters, values, frame, pass.row_vectors);
+        glNamedBufferSubData(block.buffer.get(), 0, static_cast<GLsizeiptr>(bytes.size()), bytes.data());
+        glBindBufferBase(GL_UNIFORM_BUFFER, block.layout->binding, block.buffer.get());
+    }
     const GLuint program = pass.program.get();
     for (const auto& uniform : pass.uniforms) {
         const Parameter& p = *uniform.parameter;

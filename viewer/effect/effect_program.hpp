@@ -19,10 +19,19 @@ struct BoundUniform {
     int texture_unit = -1;  // samplers: the unit their texture is bound to
 };
 
+// The uniform buffer of a translated stage, refilled from the parameters before each draw.
+struct BoundUniformBlock {
+    const UniformBlockLayout* layout = nullptr;
+    std::vector<const Parameter*> parameters;  // per member of the layout
+    gl::Buffer buffer;
+};
+
 struct CompiledPass {
     const Pass* pass = nullptr;
     gl::Program program;
     std::vector<BoundUniform> uniforms;
+    std::vector<BoundUniformBlock> blocks;
+    bool row_vectors = false;  // the effect's matrix convention (Effect::row_vectors)
     int texture_units = 0;
 };
 
@@ -41,6 +50,11 @@ CompiledTechnique compile_technique(const Effect& effect, const Technique& techn
 // with repeats folded: code shared by techniques (top-level GLSL, a .brdf file's BRDF()) fails the
 // same way in each, and is reported once as "file:line: message [techniques A, B, C]".
 std::string fold_repeated_messages(const std::string& lines);
+
+// The bytes of a translated stage's uniform block: every member from its parameter's value or
+// semantic, matrices transposed for row-vector effects. Exposed for tests of the packing.
+std::vector<std::byte> pack_uniform_block(const UniformBlockLayout& layout, const std::vector<const Parameter*>& parameters,
+                                          const ParameterValues& values, const FrameContext& frame, bool row_vectors);
 
 // Sets every non-sampler uniform of the pass: semantics from `frame`, the rest from `values`.
 // (Samplers have fixed units; the renderer binds their textures.)

@@ -14,6 +14,7 @@
 #include "effect/lexer.hpp"
 #include "effect/semantics.hpp"
 #include "effect/texture_annotations.hpp"
+#include "legacy/legacy_effect.hpp"
 
 namespace fxview::effect {
 
@@ -376,7 +377,11 @@ private:
         shader_index_.emplace(name.text, effect_.shaders.size());
         const Token open = expect('{', "to open shader " + name.text);
         const Token close = skip_block(open, "shader " + name.text);
-        effect_.shaders.push_back({name.text, effect_.sources.glsl(open.end, close.begin), at(name)});
+        ShaderBlock block;
+        block.name = name.text;
+        block.code = effect_.sources.glsl(open.end, close.begin);
+        block.where = at(name);
+        effect_.shaders.push_back(std::move(block));
     }
 
     // plugin NAME < string Type = "..."; ... >;
@@ -580,7 +585,8 @@ Effect load_effect(const std::string& path, const LoadOptions& options) {
     effect.access.allow_folder(std::filesystem::path(path).parent_path().empty() ? std::filesystem::path(".")
                                                                                  : std::filesystem::path(path).parent_path());
     effect.sources = SourceMap::load(path, options.include_dirs, effect.limits, effect.access);
-    Parser(effect).parse();
+    if (legacy::is_legacy_effect(effect)) legacy::load_legacy_effect(effect, options.matrix_convention);
+    else Parser(effect).parse();
     for (auto& parameter : effect.parameters)
         if (parameter.ui.items.size() == 1)
             if (const auto list = options.item_lists.find(parameter.ui.items[0]); list != options.item_lists.end())

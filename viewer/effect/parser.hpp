@@ -20,6 +20,9 @@ struct LoadOptions {
     // Combo entries filled in by the application: a parameter whose UIItems is exactly one of these
     // keys (e.g. "spectral:library") gets the list (e.g. the library's spectrum names).
     std::map<std::string, std::vector<std::string>> item_lists;
+    // Legacy (Cg/HLSL) effects: "row" or "column" overrides how their matrices multiply vectors
+    // (docs/legacy-effects.md); empty: the effect's annotation, its use of mul(), its file kind.
+    std::string matrix_convention;
 };
 
 Effect load_effect(const std::string& path, const LoadOptions& options);

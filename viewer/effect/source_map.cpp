@@ -65,7 +65,12 @@ std::optional<std::string> include_name(std::string_view rest) {
     if (open == rest.size() || (rest[open] != '"' && rest[open] != '<')) return std::nullopt;
     const size_t close = rest.find_first_of("\">", open + 1);
     if (close == std::string_view::npos || close == open + 1 || !only_comment_after(rest, close + 1)) return std::nullopt;
-    return std::string(rest.substr(open + 1, close - open - 1));
+    // Windows paths of legacy effects (include\\Quad.fxh): any run of backslashes is one separator.
+    std::string name;
+    for (const char c : rest.substr(open + 1, close - open - 1))
+        if (c != '\\') name += c;
+        else if (name.empty() || name.back() != '/') name += '/';
+    return name;
 }
 
 constexpr size_t kMaxIncludeName = 1024;
@@ -189,6 +194,19 @@ int SourceMap::file_index(const std::string& name) const {
 size_t SourceMap::line_index(size_t offset) const {
     const auto next = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
     return next == line_starts_.begin() ? 0 : static_cast<size_t>(next - line_starts_.begin()) - 1;
+}
+
+SourceLocation SourceMap::locate_line(int line) const {
+    if (origins_.empty()) return {files_.empty() ? "" : files_.front(), 0};
+    const LineOrigin origin = origins_[std::min(static_cast<size_t>(std::max(line, 1) - 1), origins_.size() - 1)];
+    return {files_[origin.file], origin.line};
+}
+
+void SourceMap::replace_text(std::string text) {
+    text_ = std::move(text);
+    line_starts_.assign(1, 0);
+    for (size_t i = 0; i < text_.size(); ++i)
+        if (text_[i] == '\n' && i + 1 < text_.size()) line_starts_.push_back(i + 1);
 }
 
 SourceLocation SourceMap::locate(size_t offset) const {

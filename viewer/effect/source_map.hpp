@@ -42,6 +42,11 @@ public:
 
     const std::string& text() const { return text_; }
     SourceLocation locate(size_t offset) const;
+    // The origin of the 1-based `line` of text().
+    SourceLocation locate_line(int line) const;
+    // Replaces the text by a version of it with the same lines (a preprocessor's output): every
+    // line keeps its origin; surplus lines count as the last one.
+    void replace_text(std::string text);
     // The text between two offsets as GLSL, with a #line directive wherever the origin jumps.
     std::string glsl(size_t begin, size_t end) const;
     // A #line directive that makes the next line count as `where`.

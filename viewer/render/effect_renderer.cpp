@@ -83,6 +83,7 @@ void EffectRenderer::render(const scene::Scene& scene, const effect::CompiledTec
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         }
         effect::apply_render_states(states);
+        glVertexAttrib4f(5, 1.0f, 1.0f, 1.0f, 1.0f);  // legacy COLOR0 inputs: meshes carry no colours, white
         glUseProgram(pass.program.get());
         for (const auto& uniform : pass.uniforms) {
             if (uniform.texture_unit < 0) continue;
@@ -95,7 +96,13 @@ void EffectRenderer::render(const scene::Scene& scene, const effect::CompiledTec
             glBindTextureUnit(static_cast<GLuint>(uniform.texture_unit), texture->texture.get());
             glBindSampler(static_cast<GLuint>(uniform.texture_unit), resources.sampler(sampler.sampler));
         }
-        if (states.draw_buffer) {
+        if (states.draw_buffer && resources.effect().legacy) {
+            // Legacy quad shaders read POSITION and TEXCOORD0 of a screen-filling quad: the plane
+            // spans [-1,1]^2 with uv 0..1 (v up, as render targets are stored).
+            frame.world = glm::mat4(1.0f);
+            effect::bind_uniforms(pass, values, frame);
+            meshes_.get("plane").draw();
+        } else if (states.draw_buffer) {
             frame.world = glm::mat4(1.0f);
             effect::bind_uniforms(pass, values, frame);
             glBindVertexArray(empty_vertex_array_.get());

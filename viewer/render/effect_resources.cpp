@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "texture/placeholder.hpp"
+
 #include "core/text.hpp"
 #include "gl/texture_upload.hpp"
 #include "spectral/fourier_table.hpp"
@@ -144,6 +146,22 @@ const GpuTexture* EffectResources::acquire(const std::string& texture_name) {
     return find(texture_name);
 }
 
+void EffectResources::add_placeholder(const effect::TextureResource& resource, const std::string& problem) {
+    TextureData data = texture::placeholder_texture(resource.type, resource.name);
+    warnings_.push_back(resource.where.str() + ": warning: texture " + resource.name + " " + excerpt(problem, 300) + "; showing a " +
+                        texture::placeholder_kind(resource.type, resource.name) + " instead (replace it with --set " + resource.name + "=FILE)");
+    GpuTexture gpu;
+    gpu.texture = gl::upload_texture(data, {false, true});
+    gpu.type = data.type;
+    gpu.format = data.format;
+    gpu.width = data.width();
+    gpu.height = data.height();
+    gpu.levels = data.levels();
+    gpu.source = data.source;
+    textures_.emplace(resource.name, std::move(gpu));
+    cpu_copies_.emplace(resource.name, std::move(data));
+}
+
 EffectResources::EffectResources(const effect::Effect& effect, const effect::ParameterValues& values,
                                  const std::vector<std::string>& texture_dirs)
     : effect_(effect) {
@@ -171,9 +189,26 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
                 generated_resources_.emplace(resource.name, &resource);
                 continue;
             }
+            const auto override_file = values.textures.find(resource.name);
+            if (effect.legacy && override_file == values.textures.end()) {
+                // A legacy effect opens even when its texture files are missing (docs/legacy-effects.md).
+                std::string problem;
+                if (resource.files.empty()) {
+                    problem = "has no file";
+                } else {
+                    try {
+                        for (const auto& file : resource.files) effect.access.require(resolve_texture_path(file, effect.path, texture_dirs), "texture file");
+                    } catch (const std::exception& error) {
+                        problem = error.what();
+                    }
+                }
+                if (!problem.empty()) {
+                    add_placeholder(resource, problem);
+                    continue;
+                }
+            }
             std::vector<std::string> paths;
             // `--set Sampler=file` replaces the file of the sampler's own texture.
-            const auto override_file = values.textures.find(resource.name);
             std::error_code error;
             if (override_file != values.textures.end()) {
                 if (!fs::is_regular_file(override_file->second, error)) throw Error(excerpt(override_file->second, 200) + ": no such texture file");
@@ -191,6 +226,10 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
             try {
                 data = load_resource(resource, paths, limits);
             } catch (const BudgetError& error) {
+                if (effect.legacy) {
+                    add_placeholder(resource, error.what());
+                    continue;
+                }
                 if (left >= effect.limits.texture_bytes) throw;
                 throw BudgetError(paths[0] + ": the effect's textures would exceed the budget effect-texture-bytes = " +
                                   std::to_string(effect.limits.effect_texture_bytes) + " (" + std::to_string(file_texture_bytes_) +
@@ -216,6 +255,10 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
         } catch (const effect::EffectError&) {
             throw;
         } catch (const std::exception& error) {
+            if (effect.legacy && !dynamic_cast<const BudgetError*>(&error) && !values.textures.count(resource.name)) {
+                add_placeholder(resource, error.what());
+                continue;
+            }
             throw effect::EffectError(resource.where, "texture " + resource.name + ": " + error.what());
         }
     }

@@ -55,8 +55,12 @@ public:
     const spectral::PackedTexture* generated(const std::string& texture_name) const;
     // CPU copies of file textures exactly as uploaded (after format conversion), for CPU references.
     const texture::TextureData* cpu_copy(const std::string& texture_name) const;
+    // Legacy effects: textures replaced by placeholders, each "file:line: warning: ...".
+    const std::vector<std::string>& warnings() const { return warnings_; }
 
 private:
+    void add_placeholder(const effect::TextureResource& resource, const std::string& problem);
+    std::vector<std::string> warnings_;
     // Each render target's size for a frame, checked (with the file textures) against the effect's
     // budgets before anything is allocated; EffectError at the target's declaration.
     std::vector<glm::ivec2> render_target_sizes(int frame_width, int frame_height) const;

@@ -14,8 +14,27 @@ EffectSession::EffectSession(std::string path, effect::LoadOptions options, std:
     auto parsed = std::make_unique<effect::Effect>(effect::load_effect(path_, options_));
     values_ = effect::default_values(*parsed);
     loaded_ = prepare(std::move(parsed), values_);
-    technique_ = loaded_->effect->default_technique().name;
+    technique_ = opening_technique();
     watch();
+}
+
+std::string EffectSession::opening_technique() const {
+    const std::string preferred = loaded_->effect->default_technique().name;
+    if (loaded_->techniques.count(preferred)) return preferred;
+    for (const auto& t : loaded_->effect->techniques)
+        if (loaded_->techniques.count(t.name)) return t.name;
+    return preferred;
+}
+
+std::vector<std::string> EffectSession::warnings() const {
+    std::vector<std::string> all = loaded_->effect->warnings;
+    for (const auto& w : loaded_->resources->warnings()) all.push_back(w);
+    if (!loaded_->failed_techniques.empty()) {
+        std::string text = loaded_->failed_techniques;
+        while (!text.empty() && text.back() == '\n') text.pop_back();
+        all.push_back(text);
+    }
+    return all;
 }
 
 std::unique_ptr<EffectSession::Loaded> EffectSession::prepare(std::unique_ptr<effect::Effect> parsed,
@@ -33,6 +52,11 @@ std::unique_ptr<EffectSession::Loaded> EffectSession::prepare(std::unique_ptr<ef
             failures += (failures.empty() ? "" : "\n") + std::string(error.what());
             if (!first) first = error.location;
         }
+    }
+    // A legacy effect opens with the techniques that translate; the others are reported.
+    if (first && loaded->effect->legacy && !loaded->techniques.empty()) {
+        loaded->failed_techniques = effect::fold_repeated_messages(failures);
+        first.reset();
     }
     if (first) throw effect::EffectError(*first, effect::fold_repeated_messages(failures), effect::EffectError::Lines{});
     for (const auto& [name, compiled] : loaded->techniques) {
@@ -75,7 +99,7 @@ std::optional<std::string> EffectSession::reload() {
     loaded_ = std::move(fresh);
     values_ = std::move(carried);
     renderer_.reset();
-    if (!loaded_->techniques.count(technique_)) technique_ = loaded_->effect->default_technique().name;
+    if (!loaded_->techniques.count(technique_)) technique_ = opening_technique();
     watch();
     return std::nullopt;
 }

@@ -41,6 +41,9 @@ public:
 
     void render(const scene::Scene& scene, const gl::RenderTarget& target, FrameTiming timing = {}, bool clear_target = true);
     const EffectResources& resources() const { return *loaded_->resources; }
+    // What loading could not honour without failing (legacy effects: ignored states, placeholder
+    // textures, techniques that did not translate), each "file:line: ..." (one or more lines).
+    std::vector<std::string> warnings() const;
     // The scene environment's maps, made (lighting/, about a second) when the source changes; the
     // frame's effect samples them (render() calls this). Throws Error naming a bad source.
     const EnvironmentMaps& environment(const scene::Environment& environment);
@@ -62,7 +65,9 @@ private:
         std::map<std::string, effect::CompiledTechnique> techniques;
         std::map<std::string, TechniqueTraits> traits;
         std::unique_ptr<EffectResources> resources;
+        std::string failed_techniques;  // legacy effects: techniques that did not translate or compile
     };
+    std::string opening_technique() const;  // the default technique, else the first that compiled
     // Compiles every technique and loads the textures of a parsed effect.
     std::unique_ptr<Loaded> prepare(std::unique_ptr<effect::Effect> parsed, const effect::ParameterValues& values) const;
     void watch();

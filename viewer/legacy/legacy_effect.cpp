@@ -1,0 +1,146 @@
+#include "legacy/legacy_effect.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "core/text.hpp"
+#include "effect/lexer.hpp"
+#include "effect/parser.hpp"
+#include "effect/semantics.hpp"
+#include "legacy/entry_wrapper.hpp"
+#include "legacy/glslang_process.hpp"
+#include "legacy/hlsl_translator.hpp"
+#include "legacy/legacy_parameters.hpp"
+#include "legacy/legacy_source.hpp"
+#include "legacy/pass_script.hpp"
+
+namespace fxview::legacy {
+namespace {
+
+using effect::ShaderStage;
+
+// The convention: the user's override, the effect's annotation, the file's use of mul(), its kind.
+bool row_vectors_for(const effect::Effect& effect, const LegacySource& source, const std::string& override_value) {
+    const auto parse = [](const std::string& text, bool& row) {
+        const std::string t = to_lower(text);
+        if (t == "row" || t == "row-vector" || t == "row-vectors" || t == "directx") { row = true; return true; }
+        if (t == "column" || t == "column-vector" || t == "column-vectors" || t == "opengl") { row = false; return true; }
+        return false;
+    };
+    bool row = false;
+    if (!override_value.empty()) {
+        if (!parse(override_value, row)) throw UsageError("--matrix-convention must be row or column, not '" + excerpt(override_value) + "'");
+        return row;
+    }
+    for (const auto& a : source.effect_annotations)
+        if (to_lower(a.name) == "matrixconvention" && a.value.is_string) {
+            if (!parse(a.value.text, row))
+                throw effect::EffectError(a.where, "MatrixConvention must be \"row\" or \"column\", not '" + excerpt(a.value.text) + "'");
+            return row;
+        }
+    if (source.row_vector_uses != source.column_vector_uses) return source.row_vector_uses > source.column_vector_uses;
+    return lower_extension(effect.path) != ".cgfx";
+}
+
+const FunctionSignature* find_function(const LegacySource& source, const CompileStatement& statement) {
+    const auto [begin, end] = source.functions.equal_range(statement.function);
+    const FunctionSignature* first = nullptr;
+    for (auto it = begin; it != end; ++it) {
+        if (!first) first = &it->second;
+        const auto uniforms = std::count_if(it->second.parameters.begin(), it->second.parameters.end(), [](const auto& p) { return p.uniform; });
+        if (static_cast<size_t>(uniforms) == statement.arguments.size()) return &it->second;
+    }
+    return first;
+}
+
+void add_pass(effect::Effect& effect, const LegacySource& source, effect::Technique& technique, const LegacyPass& legacy, int file_lines) {
+    effect::Pass pass;
+    pass.name = legacy.name;
+    pass.where = legacy.where;
+    pass.states = legacy.states;
+    apply_pass_script(pass, legacy.annotations, effect, effect.warnings);
+    std::vector<StageRequest> requests;
+    std::string errors;
+    for (const auto& statement : legacy.programs) {
+        const FunctionSignature* function = find_function(source, statement);
+        if (!function) {
+            errors += statement.where.str() + ": error: unknown function '" + excerpt(statement.function) + "' in the compile statement\n";
+            continue;
+        }
+        const std::string entry = statement.stage == ShaderStage::Vertex ? "fxview_vertex_entry" : statement.stage == ShaderStage::Fragment ? "fxview_fragment_entry" : "fxview_geometry_entry";
+        std::string wrapper_error;
+        const std::string wrapper = entry_wrapper(*function, statement, entry, wrapper_error);
+        if (!wrapper_error.empty()) {
+            errors += statement.where.str() + ": error: " + wrapper_error + "\n";
+            continue;
+        }
+        requests.push_back({statement.stage, source.code + "\n" + wrapper, entry, statement.where});
+    }
+    const bool has_vertex = std::any_of(legacy.programs.begin(), legacy.programs.end(), [](const auto& s) { return s.stage == ShaderStage::Vertex; });
+    const bool has_fragment = std::any_of(legacy.programs.begin(), legacy.programs.end(), [](const auto& s) { return s.stage == ShaderStage::Fragment; });
+    if (!has_vertex || !has_fragment)
+        errors += legacy.where.str() + ": error: pass " + legacy.name + " needs a vertex and a fragment program (fixed-function passes are not supported)\n";
+    TranslatedPass translated;
+    if (errors.empty()) {
+        translated = translate_pass(requests, file_lines, [&](int line) {
+            // Offsets of the code are offsets of the preprocessed text: SourceMap knows their origin.
+            return effect.sources.locate_line(line);
+        });
+        errors = translated.errors;
+    }
+    for (const ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
+        effect::ShaderBlock block;
+        block.name = technique.name + "/" + pass.name + "/" + effect::stage_name(stage);
+        block.where = pass.where;
+        block.complete = true;
+        if (errors.empty()) {
+            block.code = translated.stages[stage].glsl;
+            block.uniform_block = translated.stages[stage].uniform_block;
+        } else if (stage == ShaderStage::Vertex) {
+            block.translation_errors = errors;  // once per pass
+        }
+        pass.shaders[stage] = block.name;
+        effect.shaders.push_back(std::move(block));
+    }
+    technique.passes.push_back(std::move(pass));
+}
+
+}  // namespace
+
+bool is_legacy_effect(const effect::Effect& effect) {
+    if (lower_extension(effect.path) == ".cgfx") return true;
+    if (lower_extension(effect.path) != ".fx") return false;
+    effect::Lexer lexer(effect.sources.text());
+    bool compiles = false;
+    for (effect::Token t = lexer.next(); t.kind != effect::TokenKind::End; t = lexer.next()) {
+        if (t.kind != effect::TokenKind::Identifier) continue;
+        if (t.text == "GLSLShader") return false;
+        if (t.text == "compile") compiles = true;
+    }
+    return compiles;
+}
+
+void load_legacy_effect(effect::Effect& effect, const std::string& matrix_convention) {
+    effect.sources.replace_text(preprocess_legacy(effect));
+    const LegacySource source = parse_legacy_source(effect);
+    effect.legacy = true;
+    effect.row_vectors = row_vectors_for(effect, source, matrix_convention);
+    effect.warnings = source.warnings;
+    effect.textures = source.textures;
+    for (const auto& global : source.globals) add_parameter(effect, global);
+    const int file_lines = static_cast<int>(std::count(source.code.begin(), source.code.end(), '\n')) + 1;
+    for (const auto& legacy : source.techniques) {
+        effect::Technique technique;
+        technique.name = legacy.name;
+        technique.where = legacy.where;
+        technique.annotations = legacy.annotations;
+        for (const auto& pass : legacy.passes) add_pass(effect, source, technique, pass, file_lines);
+        effect.techniques.push_back(std::move(technique));
+    }
+    if (effect.techniques.empty()) {
+        throw effect::EffectError({effect.path, 1}, source.warnings.empty() ? "the effect defines no technique"
+                                                                            : "the effect defines no technique fxview can run (" + source.warnings.front() + ")");
+    }
+}
+
+}  // namespace fxview::legacy
