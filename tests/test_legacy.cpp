@@ -27,6 +27,7 @@ effect::LoadOptions load_options(const std::string& convention = "") {
     effect::LoadOptions options;
     options.include_dirs = {std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/lib"};
     options.matrix_convention = convention;
+    options.access.allow_folder(std::filesystem::path(FXVIEW_SOURCE_EFFECTS_DIR).parent_path() / "textures");  // as the CLI allows
     return options;
 }
 
@@ -203,9 +204,13 @@ TEST_CASE("missing textures become placeholders with a warning naming file and p
     bool named = false;
     for (const auto& w : session.warnings())
         named = named || (w.find("plastic_dx9.fx:37") != std::string::npos && w.find("default_color.dds") != std::string::npos &&
-                          w.find("--set ColorTexture=FILE") != std::string::npos);
+                          w.find("--set ColorSampler=FILE") != std::string::npos);
     CHECK(named);
     CHECK(session.resources().find("ColorTexture")->source.find("placeholder") != std::string::npos);
+    // --set on the sampler replaces the texture it reads.
+    session.values().textures["ColorSampler"] = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/../textures/checker.png";
+    session.reload_textures();
+    CHECK(session.resources().find("ColorTexture")->source.find("checker.png") != std::string::npos);
 }
 
 TEST_CASE("errors name the original file:line, the technique and the pass") {

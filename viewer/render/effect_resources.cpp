@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "effect/parser.hpp"
 #include "texture/placeholder.hpp"
 
 #include "core/text.hpp"
@@ -148,8 +149,11 @@ const GpuTexture* EffectResources::acquire(const std::string& texture_name) {
 
 void EffectResources::add_placeholder(const effect::TextureResource& resource, const std::string& problem) {
     TextureData data = texture::placeholder_texture(resource.type, resource.name);
+    std::string sampler = resource.name;  // what --set takes: a sampler reading the texture
+    for (const auto& p : effect_.parameters)
+        if (effect::is_sampler_type(p.type) && p.texture == resource.name) sampler = p.name;
     warnings_.push_back(resource.where.str() + ": warning: texture " + resource.name + " " + excerpt(problem, 300) + "; showing a " +
-                        texture::placeholder_kind(resource.type, resource.name) + " instead (replace it with --set " + resource.name + "=FILE)");
+                        texture::placeholder_kind(resource.type, resource.name) + " instead (replace it with --set " + sampler + "=FILE)");
     GpuTexture gpu;
     gpu.texture = gl::upload_texture(data, {false, true});
     gpu.type = data.type;
@@ -189,7 +193,11 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
                 generated_resources_.emplace(resource.name, &resource);
                 continue;
             }
-            const auto override_file = values.textures.find(resource.name);
+            // `--set Sampler=file` replaces the file of the texture the sampler reads.
+            auto override_file = values.textures.find(resource.name);
+            for (const auto& p : effect.parameters)
+                if (override_file == values.textures.end() && effect::is_sampler_type(p.type) && p.texture == resource.name)
+                    override_file = values.textures.find(p.name);
             if (effect.legacy && override_file == values.textures.end()) {
                 // A legacy effect opens even when its texture files are missing (docs/legacy-effects.md).
                 std::string problem;
@@ -255,7 +263,10 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
         } catch (const effect::EffectError&) {
             throw;
         } catch (const std::exception& error) {
-            if (effect.legacy && !dynamic_cast<const BudgetError*>(&error) && !values.textures.count(resource.name)) {
+            bool overridden = values.textures.count(resource.name) > 0;  // the user's own file: its problem is reported
+            for (const auto& p : effect.parameters)
+                overridden = overridden || (effect::is_sampler_type(p.type) && p.texture == resource.name && values.textures.count(p.name));
+            if (effect.legacy && !overridden && !dynamic_cast<const BudgetError*>(&error)) {
                 add_placeholder(resource, error.what());
                 continue;
             }
