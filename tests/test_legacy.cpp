@@ -194,8 +194,32 @@ TEST_CASE("post-processing: a pass script draws into a render target, a screen q
     const effect::Effect e = effect::load_effect(kLegacy + "/postprocess.fx", load_options());
     REQUIRE(e.techniques.size() == 1);  // technique10 skipped with a note
     CHECK(e.warnings.front().find("technique10 Dx10Only skipped") != std::string::npos);
-    CHECK(e.techniques[0].passes[0].states.render_targets == std::vector<std::string>{"SceneTexture"});
-    CHECK(e.techniques[0].passes[1].states.draw_buffer);
+    // The technique script: ScriptExternal (the scene by the plain shader), then Scene and Post.
+    const auto& passes = e.techniques[0].passes;
+    REQUIRE(passes.size() == 3);
+    CHECK(passes[0].states.draw_scene);
+    CHECK(passes[1].name == "Scene");
+    CHECK(passes[1].states.render_targets == std::vector<std::string>{"SceneTexture"});
+    CHECK(passes[2].states.draw_buffer);
+    CHECK(passes[2].states.render_targets.empty());
+}
+
+TEST_CASE("a scene glow: technique-script targets, the external scene, a blur through macros of an included header") {
+    const image::FloatImage picture = render_effect("glow.fx", "", 128);
+    const image::FloatImage reference = debug_view(128);
+    // The scene (fxview's plain grey Lambert) reaches the frame through ScnMap; the glow spreads it
+    // past the silhouette: a pixel just outside the sphere is no longer the black background.
+    CHECK(luminance(picture.pixel(64, 64)) > 0.2);
+    int outside = -1;
+    for (int x = 127; x > 64; --x)
+        if (reference.pixel(x, 64)[3] > 0) { outside = x + 3; break; }
+    REQUIRE(outside > 64);
+    CHECK(reference.pixel(outside, 64)[3] == 0.0f);
+    CHECK(luminance(picture.pixel(outside, 64)) > 0.005);
+    CHECK(luminance(picture.pixel(2, 2)) < 1e-4);  // far from the sphere: the clear colour
+    const effect::Effect e = effect::load_effect(kLegacy + "/glow.fx", load_options());
+    REQUIRE(e.techniques[0].passes.size() == 3);
+    CHECK(e.techniques[0].passes[1].states.render_targets == std::vector<std::string>{"BlurMap"});
 }
 
 TEST_CASE("missing textures become placeholders with a warning naming file and parameter") {

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "core/text.hpp"
 #include "app/effect_options.hpp"
 #include "effect/parameter_values.hpp"
 #include "effect/parser.hpp"
@@ -83,6 +84,7 @@ CommandRunner add_list_command(CLI::App& app) {
         for (size_t i = 0; i < effect.parameters.size(); ++i) {
             const effect::Parameter& p = effect.parameters[i];
             std::cout << "  " << p.type << " " << p.name << (p.semantic.empty() ? "" : " : " + p.semantic);
+            if (!p.ui.label.empty() && p.ui.label != p.name) std::cout << "  \"" << excerpt(p.ui.label, 80) << "\"";
             if (p.ui.min || p.ui.max)
                 std::cout << "  range " << (p.ui.min ? parameters[i]["min"].dump() : "-") << ".." << (p.ui.max ? parameters[i]["max"].dump() : "-");
             if (p.default_value) {

@@ -84,6 +84,10 @@ CompiledTechnique compile_technique(const Effect& effect, const Technique& techn
         CompiledPass compiled_pass;
         compiled_pass.pass = &pass;
         compiled_pass.row_vectors = effect.row_vectors;
+        if (pass.states.draw_scene) {  // drawn by fxview's plain shader: no program of its own
+            compiled.passes.push_back(std::move(compiled_pass));
+            continue;
+        }
         // A translated stage that failed to translate fails its technique with the translator's messages.
         std::string translation;
         for (const auto& [stage, name] : pass.shaders) translation += effect.find_shader(name)->translation_errors;

@@ -28,6 +28,9 @@ struct RenderStates {
     std::optional<float> clear_depth;
     std::vector<std::string> render_targets;  // colour attachments by index; empty: the frame's target
     bool draw_buffer = false;  // Draw = Buffer: one full-screen triangle instead of the scene's objects
+    // Legacy SAS scripts' ScriptExternal: the scene's objects drawn by fxview's plain shader (what
+    // FX Composer's other materials drew), not by the pass's programs.
+    bool draw_scene = false;
 };
 
 // The right-hand side of `State = value;`: words and numbers in order, e.g. (SrcAlpha, OneMinusSrcAlpha).

@@ -53,12 +53,13 @@ const FunctionSignature* find_function(const LegacySource& source, const Compile
     return first;
 }
 
-void add_pass(effect::Effect& effect, const LegacySource& source, effect::Technique& technique, const LegacyPass& legacy, int file_lines) {
+// Returns whether the pass's own script chose its render targets.
+bool add_pass(effect::Effect& effect, const LegacySource& source, effect::Technique& technique, const LegacyPass& legacy, int file_lines) {
     effect::Pass pass;
     pass.name = legacy.name;
     pass.where = legacy.where;
     pass.states = legacy.states;
-    apply_pass_script(pass, legacy.annotations, effect, effect.warnings);
+    const bool sets_targets = apply_pass_script(pass, legacy.annotations, effect, effect.warnings);
     std::vector<StageRequest> requests;
     std::string errors;
     for (const auto& statement : legacy.programs) {
@@ -103,6 +104,7 @@ void add_pass(effect::Effect& effect, const LegacySource& source, effect::Techni
         effect.shaders.push_back(std::move(block));
     }
     technique.passes.push_back(std::move(pass));
+    return sets_targets;
 }
 
 }  // namespace
@@ -134,7 +136,9 @@ void load_legacy_effect(effect::Effect& effect, const std::string& matrix_conven
         technique.name = legacy.name;
         technique.where = legacy.where;
         technique.annotations = legacy.annotations;
-        for (const auto& pass : legacy.passes) add_pass(effect, source, technique, pass, file_lines);
+        std::vector<bool> sets_targets;
+        for (const auto& pass : legacy.passes) sets_targets.push_back(add_pass(effect, source, technique, pass, file_lines));
+        apply_technique_script(technique, sets_targets, effect, effect.warnings);
         effect.techniques.push_back(std::move(technique));
     }
     if (effect.techniques.empty()) {

@@ -1,5 +1,8 @@
 #include "legacy/pass_script.hpp"
 
+#include <algorithm>
+#include <map>
+
 #include "core/text.hpp"
 
 namespace fxview::legacy {
@@ -11,10 +14,13 @@ std::string trim(std::string s) {
     return s;
 }
 
-}  // namespace
+struct Command {
+    std::string key, value;  // key lower case
+    std::string text;        // as written, for messages
+};
 
-void apply_pass_script(effect::Pass& pass, const std::vector<effect::Annotation>& annotations, const effect::Effect& effect,
-                       std::vector<std::string>& warnings) {
+std::vector<Command> script_commands(const std::vector<effect::Annotation>& annotations) {
+    std::vector<Command> commands;
     for (const auto& a : annotations) {
         if (to_lower(a.name) != "script" || !a.value.is_string) continue;
         const std::string& script = a.value.text;
@@ -25,46 +31,148 @@ void apply_pass_script(effect::Pass& pass, const std::vector<effect::Annotation>
             start = i + 1;
             if (command.empty()) continue;
             const size_t equals = command.find('=');
-            const std::string key = to_lower(trim(command.substr(0, equals)));
-            const std::string value = equals == std::string::npos ? "" : trim(command.substr(equals + 1));
-            if (key.rfind("rendercolortarget", 0) == 0) {
-                const std::string index_text = key.substr(17);
-                const size_t index = index_text.empty() ? 0 : static_cast<size_t>(index_text[0] - '0');
-                if (index > 3) continue;
-                if (value.empty()) {  // back to the frame
-                    if (pass.states.render_targets.size() > index) pass.states.render_targets.resize(index);
-                    continue;
-                }
-                if (pass.states.render_targets.size() <= index) pass.states.render_targets.resize(index + 1);
-                pass.states.render_targets[index] = value;
-            } else if (key == "draw") {
-                pass.states.draw_buffer = to_lower(value) == "buffer";
-            } else if (key == "clear") {
-                pass.states.clear = true;
-            } else if (key == "clearsetcolor" || key == "clearsetdepth") {
-                const effect::Parameter* p = effect.find_parameter(value);
-                if (!p || !p->default_value) continue;
-                const auto& n = p->default_value->numbers;
-                if (key == "clearsetdepth" && !n.empty()) pass.states.clear_depth = static_cast<float>(n[0]);
-                if (key == "clearsetcolor" && n.size() >= 3)
-                    pass.states.clear_color = std::array<float, 4>{static_cast<float>(n[0]), static_cast<float>(n[1]), static_cast<float>(n[2]),
-                                                                   n.size() > 3 ? static_cast<float>(n[3]) : 1.0f};
-            } else if (key == "renderdepthstenciltarget" || key == "pass") {
-                // every target has its own depth buffer; passes run in the order they are declared
-            } else {
-                warnings.push_back(a.where.str() + ": pass " + pass.name + ": script command " + excerpt(command) + " is not supported and ignored");
-            }
+            commands.push_back({to_lower(trim(command.substr(0, equals))), equals == std::string::npos ? "" : trim(command.substr(equals + 1)), command});
         }
     }
-    // A target named by the script but never declared as one: back to the frame, with a warning.
+    return commands;
+}
+
+// Sets a render target slot from RenderColorTargetN=NAME (empty NAME: back to the frame).
+void set_target(std::vector<std::string>& targets, const std::string& key, const std::string& value) {
+    const std::string index_text = key.substr(17);
+    const size_t index = index_text.empty() ? 0 : static_cast<size_t>(index_text[0] - '0');
+    if (index > 3) return;
+    if (value.empty()) {
+        if (targets.size() > index) targets.resize(index);
+        return;
+    }
+    if (targets.size() <= index) targets.resize(index + 1);
+    targets[index] = value;
+}
+
+void set_clear_value(effect::RenderStates& states, const std::string& key, const std::string& value, const effect::Effect& effect) {
+    const effect::Parameter* p = effect.find_parameter(value);
+    if (!p || !p->default_value) return;
+    const auto& n = p->default_value->numbers;
+    if (key == "clearsetdepth" && !n.empty()) states.clear_depth = static_cast<float>(n[0]);
+    if (key == "clearsetcolor" && n.size() >= 3)
+        states.clear_color = std::array<float, 4>{static_cast<float>(n[0]), static_cast<float>(n[1]), static_cast<float>(n[2]),
+                                                  n.size() > 3 ? static_cast<float>(n[3]) : 1.0f};
+}
+
+// A target named by a script but never declared as one: back to the frame, with a warning.
+void check_targets(effect::Pass& pass, const effect::Effect& effect, std::vector<std::string>& warnings) {
     for (auto& target : pass.states.render_targets) {
         const effect::TextureResource* texture = effect.find_texture(target);
         if (!texture || !texture->render_target) {
             warnings.push_back(pass.where.str() + ": pass " + pass.name + " renders into '" + excerpt(target) + "', which is no render target; it draws into the frame");
             pass.states.render_targets.clear();
-            break;
+            return;
         }
     }
+}
+
+}  // namespace
+
+void apply_technique_script(effect::Technique& technique, const std::vector<bool>& pass_sets_targets, const effect::Effect& effect,
+                            std::vector<std::string>& warnings) {
+    const std::vector<Command> commands = script_commands(technique.annotations);
+    if (std::none_of(commands.begin(), commands.end(), [](const Command& c) { return c.key == "pass"; })) return;
+    constexpr size_t kMaxPasses = 256;
+    std::vector<effect::Pass> ordered;
+    std::vector<std::string> targets;  // the technique script's current targets
+    effect::RenderStates clears;       // its pending Clear / ClearSet* for the next pass
+    bool pending_clear = false;
+    struct Loop { size_t command; int left; };
+    std::vector<Loop> loops;
+    std::map<std::string, int> uses;
+    size_t steps = 0;
+    for (size_t i = 0; i < commands.size(); ++i) {
+        if (++steps > 100000) break;  // loops of loops: bounded work
+        const Command& c = commands[i];
+        if (c.key.rfind("rendercolortarget", 0) == 0) {
+            set_target(targets, c.key, c.value);
+        } else if (c.key == "clearsetcolor" || c.key == "clearsetdepth") {
+            set_clear_value(clears, c.key, c.value, effect);
+        } else if (c.key == "clear") {
+            pending_clear = true;
+        } else if (c.key == "pass" || c.key == "scriptexternal") {
+            if (ordered.size() >= kMaxPasses) {
+                warnings.push_back(technique.where.str() + ": technique " + technique.name + ": its script runs more than 256 passes; the rest are dropped");
+                break;
+            }
+            effect::Pass pass;
+            if (c.key == "scriptexternal") {
+                pass.name = "ScriptExternal";
+                pass.where = technique.where;
+                pass.states.draw_scene = true;
+                pass.states.render_targets = targets;
+            } else {
+                size_t found = technique.passes.size();
+                for (size_t k = 0; k < technique.passes.size(); ++k)
+                    if (technique.passes[k].name == c.value) found = k;
+                if (found == technique.passes.size()) {
+                    warnings.push_back(technique.where.str() + ": technique " + technique.name + ": its script names no pass '" + excerpt(c.value) + "'");
+                    continue;
+                }
+                pass = technique.passes[found];
+                if (!pass_sets_targets[found]) pass.states.render_targets = targets;
+            }
+            if (const int n = ++uses[pass.name]; n > 1) pass.name += "#" + std::to_string(n);
+            if (pending_clear) {
+                pass.states.clear = true;
+                if (!pass.states.clear_color) pass.states.clear_color = clears.clear_color;
+                if (!pass.states.clear_depth) pass.states.clear_depth = clears.clear_depth;
+                pending_clear = false;
+            }
+            check_targets(pass, effect, warnings);
+            ordered.push_back(std::move(pass));
+        } else if (c.key == "loopbycount") {
+            int count = 0;
+            if (const effect::Parameter* p = effect.find_parameter(c.value); p && p->default_value && !p->default_value->numbers.empty())
+                count = static_cast<int>(p->default_value->numbers[0]);
+            else
+                try { count = std::stoi(c.value); } catch (const std::exception&) { count = 1; }
+            loops.push_back({i, std::clamp(count, 0, 64)});
+            if (loops.back().left == 0) {  // skip the body
+                int depth = 1;
+                while (depth > 0 && ++i < commands.size()) depth += commands[i].key == "loopbycount" ? 1 : commands[i].key == "loopend" ? -1 : 0;
+                loops.pop_back();
+            }
+        } else if (c.key == "loopend") {
+            if (loops.empty()) continue;
+            if (--loops.back().left > 0) i = loops.back().command;
+            else loops.pop_back();
+        } else if (c.key == "renderdepthstenciltarget" || c.key == "loopgetindex") {
+            // own depth per target; the loop index is not exposed to programs
+        } else {
+            warnings.push_back(technique.where.str() + ": technique " + technique.name + ": script command " + excerpt(c.text) + " is not supported and ignored");
+        }
+    }
+    if (!ordered.empty()) technique.passes = std::move(ordered);
+}
+
+bool apply_pass_script(effect::Pass& pass, const std::vector<effect::Annotation>& annotations, const effect::Effect& effect,
+                       std::vector<std::string>& warnings) {
+    bool sets_targets = false;
+    for (const Command& c : script_commands(annotations)) {
+        if (c.key.rfind("rendercolortarget", 0) == 0) {
+            set_target(pass.states.render_targets, c.key, c.value);
+            sets_targets = true;
+        } else if (c.key == "draw") {
+            pass.states.draw_buffer = to_lower(c.value) == "buffer";
+        } else if (c.key == "clear") {
+            pass.states.clear = true;
+        } else if (c.key == "clearsetcolor" || c.key == "clearsetdepth") {
+            set_clear_value(pass.states, c.key, c.value, effect);
+        } else if (c.key == "renderdepthstenciltarget" || c.key == "pass") {
+            // every target has its own depth buffer; passes run in the order they are declared
+        } else {
+            warnings.push_back(pass.where.str() + ": pass " + pass.name + ": script command " + excerpt(c.text) + " is not supported and ignored");
+        }
+    }
+    check_targets(pass, effect, warnings);
+    return sets_targets;
 }
 
 }  // namespace fxview::legacy

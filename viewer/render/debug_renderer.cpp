@@ -55,7 +55,11 @@ void DebugRenderer::render(const scene::Scene& scene, DebugView view, const gl::
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     }
 
-    const float aspect = static_cast<float>(target.width()) / static_cast<float>(target.height());
+    draw_objects(scene, view, static_cast<float>(target.width()) / static_cast<float>(target.height()));
+    target.resolve();
+}
+
+void DebugRenderer::draw_objects(const scene::Scene& scene, DebugView view, float aspect) {
     const glm::mat4 view_projection =
         math::perspective_matrix(scene.camera.fov_y_degrees, aspect, scene.camera.near_plane, scene.camera.far_plane) *
         math::view_matrix(scene.camera.pose);
@@ -76,7 +80,6 @@ void DebugRenderer::render(const scene::Scene& scene, DebugView view, const gl::
         meshes_.get(object.mesh).draw();
     }
     glUseProgram(0);
-    target.resolve();
 }
 
 }  // namespace fxview::render

@@ -22,6 +22,9 @@ public:
     DebugRenderer();  // compiles the built-in program; needs a current context
     // `clear`: start the frame (false: draw over what the target holds, for mixed renderers).
     void render(const scene::Scene& scene, DebugView view, const gl::RenderTarget& target, bool clear = true);
+    // Draws the objects into whatever framebuffer is bound, with the current states (legacy
+    // effects' ScriptExternal: the scene that a post-processing effect works on).
+    void draw_objects(const scene::Scene& scene, DebugView view, float aspect);
 
 private:
     gl::Program program_;

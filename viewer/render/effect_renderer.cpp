@@ -83,6 +83,11 @@ void EffectRenderer::render(const scene::Scene& scene, const effect::CompiledTec
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         }
         effect::apply_render_states(states);
+        if (states.draw_scene) {
+            if (!scene_renderer_) scene_renderer_ = std::make_unique<DebugRenderer>();
+            scene_renderer_->draw_objects(scene, DebugView::Plain, frame.viewport_size.x / frame.viewport_size.y);
+            continue;
+        }
         glVertexAttrib4f(5, 1.0f, 1.0f, 1.0f, 1.0f);  // legacy COLOR0 inputs: meshes carry no colours, white
         glUseProgram(pass.program.get());
         for (const auto& uniform : pass.uniforms) {

@@ -3,9 +3,11 @@
 // targets, drawing every object with its SAS matrices, or one full-screen triangle (Draw = Buffer).
 #pragma once
 #include <map>
+#include <memory>
 
 #include "effect/effect_program.hpp"
 #include "gl/render_target.hpp"
+#include "render/debug_renderer.hpp"
 #include "render/effect_resources.hpp"
 #include "render/mesh_cache.hpp"
 #include "scene/scene.hpp"
@@ -37,6 +39,7 @@ private:
     MeshCache meshes_;
     gl::VertexArray empty_vertex_array_;  // full-screen passes generate their vertices from gl_VertexID
     std::map<const effect::Pass*, PassFramebuffer> pass_framebuffers_;
+    std::unique_ptr<DebugRenderer> scene_renderer_;  // legacy ScriptExternal passes, made on first use
 };
 
 }  // namespace fxview::render
