@@ -287,3 +287,27 @@ TEST_CASE("hot reload of a legacy file keeps the user's values") {
     CHECK(!session.reload().has_value());
     CHECK(centre()[1] == 0.5f);  // the edited Gain survived both reloads
 }
+
+TEST_CASE("DirectX SDK and Cg Toolkit idioms: float4x3 World, ViewPosition, untyped cube samplers, VFACE, glstate, h4tex2D") {
+    const effect::Effect dx = effect::load_effect(kLegacy + "/dx_sdk_idioms.fx", load_options());
+    CHECK(parameter(dx, "World43").semantic == "WORLD");  // filled although float4x3 is no editable type
+    CHECK(parameter(dx, "ViewPos").semantic == "CAMERAPOSITION");
+    CHECK(parameter(dx, "Reflectivity").ui.max == 1.0);  // a float4 UIMax gives its first component
+    CHECK(parameter(dx, "Env").type == "samplerCube");   // untyped, read with texCUBE
+    CHECK(dx.find_texture("EnvTex")->files == std::vector<std::string>{"missing_sky.dds"});  // string name = ...
+    CHECK(dx.techniques.size() == 1);  // the DX10 state objects and technique10 are skipped
+    const std::string fragment = effect::assemble_stage(dx, dx.techniques[0].passes[0], effect::ShaderStage::Fragment);
+    CHECK(fragment.find("gl_FrontFacing") != std::string::npos);  // VFACE
+    CHECK(fragment.find("samplerCube Env") != std::string::npos);
+
+    const effect::Effect cg = effect::load_effect(kLegacy + "/cg_toolkit.cgfx", load_options());
+    CHECK(!cg.row_vectors);
+    CHECK(parameter(cg, "fxview_glstate_mvp").semantic == "WORLDVIEWPROJECTION");
+    CHECK(parameter(cg, "fxview_glstate_light0_position").semantic == "VIEWLIGHTPOSITION");
+
+    const image::FloatImage reference = debug_view();
+    CHECK(overlap(render_effect("dx_sdk_idioms.fx"), reference) > 0.98);
+    const image::FloatImage toolkit = render_effect("cg_toolkit.cgfx");
+    CHECK(overlap(toolkit, reference) > 0.98);
+    CHECK(luminance(toolkit.pixel(44, 20)) > luminance(toolkit.pixel(20, 44)) + 0.05);  // lit towards the light
+}

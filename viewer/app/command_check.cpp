@@ -32,7 +32,7 @@ int check_effect(const std::string& path, const effect::LoadOptions& load_option
                     for (const auto& [stage, name] : pass.shaders)
                         std::cout << "// ---- " << path << ": technique " << technique.name << ", pass " << pass.name << ", "
                                   << effect::stage_name(stage) << " stage\n" << effect::assemble_stage(effect, pass, stage) << "\n";
-        for (const auto& warning : effect.warnings) std::cout << excerpt(warning, 4000) << "\n";
+        for (const auto& warning : effect.warnings) std::cout << excerpt_lines(warning) << "\n";
         int broken = 0;
         std::string compile_errors;  // every technique's, folded where they repeat (shared code)
         for (const auto& technique : effect.techniques) {
@@ -46,7 +46,7 @@ int check_effect(const std::string& path, const effect::LoadOptions& load_option
         if (!compile_errors.empty()) print_error(effect::fold_repeated_messages(compile_errors));
         try {  // textures: every file found, readable, allowed and of the declared shape
             render::EffectResources resources(effect, effect::default_values(effect), texture_folders());
-            for (const auto& warning : resources.warnings()) std::cout << excerpt(warning, 4000) << "\n";
+            for (const auto& warning : resources.warnings()) std::cout << excerpt_lines(warning) << "\n";
         } catch (const effect::EffectError& error) {
             print_error(error.what());
             ++broken;

@@ -79,7 +79,7 @@ effect::LoadOptions effect_load_options(const EffectOptions& options) {
 
 std::unique_ptr<render::EffectSession> open_effect_session(const EffectOptions& options) {
     auto session = std::make_unique<render::EffectSession>(options.path, effect_load_options(options), texture_folders());
-    for (const auto& warning : session->warnings()) std::cerr << excerpt(warning, 4000) << "\n";
+    for (const auto& warning : session->warnings()) std::cerr << excerpt_lines(warning) << "\n";
     if (!options.technique.empty()) session->select_technique(options.technique);
     if (!options.preset.empty()) {
         const effect::Preset preset = effect::load_preset(options.preset, session->effect(), session->values());

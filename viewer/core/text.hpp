@@ -35,4 +35,16 @@ inline std::string excerpt(std::string_view text, size_t max_chars = 40) {
     return out;
 }
 
+// excerpt() line by line: a message of several lines (compiler output) keeps its line breaks.
+inline std::string excerpt_lines(std::string_view text, size_t max_chars_per_line = 4000) {
+    std::string out;
+    for (size_t start = 0; start <= text.size();) {
+        const size_t end = std::min(text.find('\n', start), text.size());
+        if (!out.empty()) out += '\n';
+        out += excerpt(text.substr(start, end - start), max_chars_per_line);
+        start = end + 1;
+    }
+    return out;
+}
+
 }  // namespace fxview

@@ -11,7 +11,8 @@ namespace {
 const std::vector<std::string> kMatrixBases = {"WORLDVIEWPROJECTION", "VIEWPROJECTION", "WORLDVIEW",
                                                "PROJECTION", "WORLD", "VIEW"};
 const std::vector<std::string> kOthers = {"CAMERAPOSITION", "LIGHTPOSITION", "LIGHTDIRECTION", "VIEWPORTPIXELSIZE",
-                                          "TIME", "FRAME", "ENVIRONMENTROTATION", "ENVIRONMENTINTENSITY"};
+                                          "TIME", "FRAME", "ENVIRONMENTROTATION", "ENVIRONMENTINTENSITY",
+                                          "VIEWLIGHTPOSITION"};
 
 std::optional<glm::mat4> matrix_for(const std::string& semantic, const FrameContext& f) {
     for (const auto& base : kMatrixBases) {
@@ -50,6 +51,10 @@ std::vector<float> semantic_value(const std::string& semantic, const FrameContex
     }
     if (semantic == "CAMERAPOSITION") return {f.camera_position.x, f.camera_position.y, f.camera_position.z, 1.0f};
     if (semantic == "LIGHTPOSITION") return {f.light_position.x, f.light_position.y, f.light_position.z, 1.0f};
+    if (semantic == "VIEWLIGHTPOSITION") {  // Cg's glstate.light[0].position: OpenGL keeps it in eye space
+        const glm::vec4 p = f.view * glm::vec4(f.light_position, 1.0f);
+        return {p.x, p.y, p.z, p.w};
+    }
     if (semantic == "LIGHTDIRECTION") {
         // Direction the light travels, towards the origin it orbits.
         const glm::vec3 d = glm::length(f.light_position) > 0 ? -glm::normalize(f.light_position) : glm::vec3(0, 0, -1);

@@ -1,6 +1,7 @@
 // SAS semantics: uniforms the application fills every draw (matrices, camera, light, time).
 // Matrix semantics are WORLD, VIEW, PROJECTION, WORLDVIEW, VIEWPROJECTION, WORLDVIEWPROJECTION,
-// each also with the suffix INVERSE, TRANSPOSE or INVERSETRANSPOSE.
+// each also with the suffix INVERSE, TRANSPOSE or INVERSETRANSPOSE; VIEWLIGHTPOSITION is the light
+// in eye space (Cg's glstate.light[0].position).
 #pragma once
 #include <glm/glm.hpp>
 

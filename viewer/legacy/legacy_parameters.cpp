@@ -27,12 +27,22 @@ std::string annotation_text(const LegacyGlobal& g, const char* name) {
 // UI hints annotation by annotation: one that does not fit (a float4 UIMin) is skipped, not fatal.
 effect::UiHints tolerant_ui_hints(const std::vector<effect::Annotation>& annotations, std::vector<std::string>& warnings) {
     effect::UiHints ui;
-    for (const auto& a : annotations) {
+    for (effect::Annotation a : annotations) {
+        // RenderMonkey and FX Composer write per-component ranges (float4 UIMin = {-10, -10, -10, -10}):
+        // the UI takes one range for all components, the first.
+        const std::string key = to_lower(a.name);
+        if ((key == "uimin" || key == "uimax" || key == "uistep" || key == "sasuimin" || key == "sasuimax") && !a.value.is_string &&
+            a.value.numbers.size() > 1)
+            a.value.numbers.resize(1);
         effect::UiHints one;
         try {
             one = effect::ui_hints_from({a});
         } catch (const effect::EffectError& error) {
-            warnings.push_back(std::string(error.what()) + " (ignored)");
+            {
+            const std::string text = error.what();  // "file:line: message"
+            const size_t colon = text.find(": ");
+            warnings.push_back(colon == std::string::npos ? text : text.substr(0, colon) + ": warning: " + text.substr(colon + 2) + " (ignored)");
+        }
             continue;
         }
         if (!one.label.empty()) ui.label = one.label;
@@ -101,6 +111,7 @@ std::string scene_semantic(const LegacyGlobal& g) {
     const std::string object = annotation_text(g, "object");
     const std::string name = to_lower(g.name);
     const bool camera = object.find("camera") != std::string::npos || (object.empty() && (name.find("eye") != std::string::npos || name.find("camera") != std::string::npos));
+    if (s == "VIEWPOSITION" || s == "WORLDCAMERAPOSITION" || s == "CAMERAWORLDPOSITION") return "CAMERAPOSITION";  // RenderMonkey, others
     if (s == "POSITION" || s == "LIGHTPOSITION" || s == "EYEPOSITION" || s == "CAMERAPOSITION") return camera || s == "EYEPOSITION" || s == "CAMERAPOSITION" ? "CAMERAPOSITION" : "LIGHTPOSITION";
     if (s == "DIRECTION" || s == "LIGHTDIRECTION") return camera ? "" : "LIGHTDIRECTION";
     if (s == "TIME" || s == "ANIMATIONTIME") return "TIME";
@@ -115,13 +126,22 @@ void add_parameter(effect::Effect& effect, const LegacyGlobal& g) {
     p.array_size = g.array_size;
     p.annotations = g.annotations;
     p.type = glsl_type(g.type);
+    const std::string lower_type = to_lower(g.type);
+    // A non-square matrix (float4x3 World : WORLD, the DirectX SDK's idiom) with a scene semantic is
+    // filled from the 4x4 matrix: the uniform block takes the rows and columns it has.
+    if (p.type.empty() && !g.semantic.empty() && lower_type.size() >= 3 && lower_type[lower_type.size() - 2] == 'x' &&
+        (lower_type.rfind("float", 0) == 0 || lower_type.rfind("half", 0) == 0) && !scene_semantic(g).empty())
+        p.type = "mat4";
+    if (p.type.empty() && (lower_type.rfind("texture", 0) == 0 || lower_type.rfind("samplerstate", 0) == 0 ||
+                           lower_type.rfind("samplercomparisonstate", 0) == 0 || lower_type.find("buffer") != std::string::npos))
+        return;  // DirectX 10 objects: only DX10 techniques (skipped) use them
     if (p.type.empty()) {
-        effect.warnings.push_back(g.where.str() + ": " + excerpt(g.type) + " " + g.name + " has no editable fxview type; it stays zero");
+        effect.warnings.push_back(g.where.str() + ": warning: " + excerpt(g.type) + " " + g.name + " has no editable fxview type; it stays zero");
         return;
     }
     p.semantic = scene_semantic(g);
     if (!g.semantic.empty() && p.semantic.empty() && effect::component_count(p.type) == 16 && upper(g.semantic) != "NONE")
-        effect.warnings.push_back(g.where.str() + ": semantic " + excerpt(g.semantic) + " of " + g.name + " is not supplied by fxview; it keeps its default");
+        effect.warnings.push_back(g.where.str() + ": warning: semantic " + excerpt(g.semantic) + " of " + g.name + " is not supplied by fxview; it keeps its default");
     p.ui = tolerant_ui_hints(g.annotations, effect.warnings);
     if (effect::is_sampler_type(p.type)) {
         p.sampler = g.sampler;
@@ -145,7 +165,7 @@ void add_parameter(effect::Effect& effect, const LegacyGlobal& g) {
         std::vector<double> numbers = g.default_value->numbers;
         if (numbers.size() == 1 && components > 1 && p.array_size == 0 && p.type.rfind("mat", 0) != 0) numbers.assign(static_cast<size_t>(components), numbers[0]);
         if (numbers.size() != static_cast<size_t>(components)) {
-            effect.warnings.push_back(g.where.str() + ": default of " + g.name + " has " + std::to_string(numbers.size()) + " value(s), needs " +
+            effect.warnings.push_back(g.where.str() + ": warning: default of " + g.name + " has " + std::to_string(numbers.size()) + " value(s), needs " +
                                       std::to_string(components) + "; missing ones are zero");
             numbers.resize(static_cast<size_t>(components), 0.0);
         }

@@ -46,7 +46,7 @@ public:
                 const Token name = next();
                 skip_to_block_end(keyword);
                 blank(keyword.begin, last_end_);
-                source_.warnings.push_back(at(keyword).str() + ": " + keyword.text + " " + name.text +
+                source_.warnings.push_back(at(keyword).str() + ": warning: " + keyword.text + " " + name.text +
                                            " skipped (DirectX 10/11 techniques are not supported; the DX9 techniques load)");
             } else if (token.kind == TokenKind::Identifier && token.text == "interface") {
                 fail(token, "Cg interfaces are not supported");
@@ -54,6 +54,8 @@ public:
                 skip_declaration();
             } else if (token.kind == TokenKind::Identifier && (token.text == "typedef" || token.text == "cbuffer" || token.text == "tbuffer")) {
                 skip_declaration();
+            } else if (token.kind == TokenKind::Identifier && is_dx10_state_object(token.text)) {
+                parse_dx10_state_object();
             } else if (token.kind == TokenKind::Identifier && to_lower(token.text) == "string") {
                 parse_string_global();
             } else if (token.kind == TokenKind::Identifier && is_texture_keyword(token.text)) {
@@ -66,6 +68,7 @@ public:
                 parse_declaration();
             }
         }
+        type_untyped_samplers();
         source_.code = apply_edits();
         return std::move(source_);
     }
@@ -231,6 +234,26 @@ private:
         return w == "texture" || w == "texture1d" || w == "texture2d" || w == "texture3d" || w == "texturecube" || w == "texturerect";
     }
 
+    static bool is_dx10_state_object(const std::string& word) {
+        const std::string w = to_lower(word);
+        return w == "rasterizerstate" || w == "depthstencilstate" || w == "blendstate" || w == "samplerstate" || w == "samplercomparisonstate";
+    }
+
+    // DirectX 10 `RasterizerState NAME { ... };` and kin: only DX10 techniques use them. A
+    // SamplerState keeps its declaration (DX10 functions may name it) without the state block.
+    void parse_dx10_state_object() {
+        const Token type = next();
+        const Token name = expect_identifier("a name after " + type.text);
+        if (is(peek(), "[")) skip_balanced(next());
+        const bool sampler = to_lower(type.text).rfind("sampler", 0) == 0;
+        const size_t block = peek().begin;
+        if (is(peek(), "{")) skip_balanced(next());
+        else if (is(peek(), "=") ) { next(); parse_value({";"}); }
+        expect(";", "after " + type.text + " " + name.text);
+        if (sampler) blank(block, last_end_ - 1);
+        else blank(type.begin, last_end_);
+    }
+
     void parse_string_global() {
         const Token first = next();
         const Token name = expect_identifier("a name after 'string'");
@@ -273,6 +296,10 @@ private:
                 if (a.value.is_string) texture.storage = storage_from_format(a.value.text);
             } else if (key == "resourcename" || key == "viewportratio" || key == "dimensions" || key == "colorspace") {
                 usable.push_back(a);
+            } else if ((key == "name" || key == "file") && a.value.is_string && !a.value.text.empty()) {
+                effect::Annotation file = a;  // DirectX 8/9 SDK effects: string name = "file.dds"
+                file.name = "ResourceName";
+                usable.push_back(file);
             }
         }
         effect::apply_texture_annotations(texture, usable);
@@ -360,16 +387,8 @@ private:
         }
         for (const auto& a : global.annotations)
             if (to_lower(a.name) == "texture" && a.value.is_string) global.texture = a.value.text;
-        if (sampler && global.type == "sampler") {  // DX9's untyped sampler takes its texture's type
-            const auto* texture = find_texture(global.texture);
-            const char* typed = !texture ? "sampler2D"
-                              : texture->type == texture::TextureType::Cube ? "samplerCUBE"
-                              : texture->type == texture::TextureType::Tex3D ? "sampler3D"
-                              : texture->type == texture::TextureType::Tex1D ? "sampler1D"
-                                                                               : "sampler2D";
-            replace(type.begin, type.end, typed);
-            global.type = typed;
-        }
+        // DX9's untyped sampler: typed at the end, from its texture or from how the code samples it.
+        if (sampler && global.type == "sampler" && !is_static) untyped_.push_back({type.begin, type.end, source_.globals.size()});
         if (is_matrix_type(global.type)) matrices_.insert(global.name);
         if (is_static) return true;
         if (to_lower(global.semantic) == "standardsglobal") {  // `float Script : STANDARDSGLOBAL` is no parameter
@@ -380,10 +399,49 @@ private:
         return true;
     }
 
-    const effect::TextureResource* find_texture(const std::string& name) const {
-        for (const auto& t : source_.textures)
+    effect::TextureResource* find_texture(const std::string& name) {
+        for (auto& t : source_.textures)
             if (t.name == name) return &t;
         return nullptr;
+    }
+
+    // Whether the code calls FUNCTION(NAME ...) (blanks allowed around the parenthesis).
+    bool sampled_with(const std::string& function, const std::string& name) const {
+        for (size_t at = text_.find(function); at != std::string::npos; at = text_.find(function, at + 1)) {
+            size_t i = at + function.size();
+            if (i < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[i])) || text_[i] == '_')) continue;  // texCUBEbias is also fine below
+            while (i < text_.size() && text_[i] == ' ') ++i;
+            if (i >= text_.size() || text_[i] != '(') continue;
+            ++i;
+            while (i < text_.size() && text_[i] == ' ') ++i;
+            if (text_.compare(i, name.size(), name) == 0 &&
+                (i + name.size() >= text_.size() || !(std::isalnum(static_cast<unsigned char>(text_[i + name.size()])) || text_[i + name.size()] == '_')))
+                return true;
+        }
+        return false;
+    }
+
+    void type_untyped_samplers() {
+        for (const auto& u : untyped_) {
+            LegacyGlobal& global = source_.globals[u.global];
+            effect::TextureResource* texture = find_texture(global.texture);
+            texture::TextureType type = texture ? texture->type : texture::TextureType::Tex2D;
+            if (type == texture::TextureType::Tex2D) {
+                for (const char* f : {"texCUBE", "texCUBEproj", "texCUBElod", "texCUBEbias"})
+                    if (sampled_with(f, global.name)) type = texture::TextureType::Cube;
+                for (const char* f : {"tex3D", "tex3Dproj", "tex3Dlod", "tex3Dbias"})
+                    if (sampled_with(f, global.name)) type = texture::TextureType::Tex3D;
+                for (const char* f : {"tex1D", "tex1Dproj", "tex1Dlod"})
+                    if (sampled_with(f, global.name)) type = texture::TextureType::Tex1D;
+                if (texture) texture->type = type;
+            }
+            const char* typed = type == texture::TextureType::Cube ? "samplerCUBE"
+                              : type == texture::TextureType::Tex3D ? "sampler3D"
+                              : type == texture::TextureType::Tex1D ? "sampler1D"
+                                                                     : "sampler2D";
+            replace(u.begin, u.end, typed);
+            global.type = typed;
+        }
     }
 
     void parse_sampler_state(LegacyGlobal& global) {
@@ -432,6 +490,10 @@ private:
                 p.type = parameter[i].text;
                 p.name = parameter[i + 1].text;
                 if (is_matrix_type(p.type)) matrices_.insert(p.name);
+            }
+            for (size_t k = 0; k < parameter.size(); ++k) {
+                if (parameter[k].text == "out" || parameter[k].text == "inout") p.output = true;
+                if (is(parameter[k], ":") && k + 1 < parameter.size()) p.semantic = parameter[k + 1].text;
             }
             size_t end = parameter.back().end;
             for (size_t k = 0; k < parameter.size(); ++k)
@@ -596,6 +658,11 @@ private:
     effect::Lexer lexer_;
     size_t last_end_ = 0;
     std::vector<Edit> edits_;
+    struct Untyped {
+        size_t begin, end;  // the `sampler` token
+        size_t global;      // index in source_.globals
+    };
+    std::vector<Untyped> untyped_;
     std::set<std::string> matrices_;  // matrix-typed globals and parameters (for mul() counting)
     std::set<std::string> warned_;    // state names already warned about
     LegacySource source_;

@@ -14,8 +14,10 @@ namespace fxview::legacy {
 
 struct FunctionParameter {
     bool uniform = false;  // bound by the compile statement's arguments
+    bool output = false;   // out or inout
     std::string type;
     std::string name;
+    std::string semantic;  // as written, empty if none
     std::string declaration;  // as written, without `uniform` and default value: "in float4 P : POSITION"
 };
 

@@ -10,7 +10,7 @@ namespace {
 
 void warn_once(const std::string& name, const std::string& message, const effect::SourceLocation& where,
                std::vector<std::string>& warnings, std::set<std::string>& warned) {
-    if (warned.insert(to_lower(name)).second) warnings.push_back(where.str() + ": " + message);
+    if (warned.insert(to_lower(name)).second) warnings.push_back(where.str() + ": warning: " + message);
 }
 
 // The words and numbers of a state value; constructor names (int2, float4, bool4) and punctuation dropped.

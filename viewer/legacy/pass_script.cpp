@@ -65,7 +65,7 @@ void check_targets(effect::Pass& pass, const effect::Effect& effect, std::vector
     for (auto& target : pass.states.render_targets) {
         const effect::TextureResource* texture = effect.find_texture(target);
         if (!texture || !texture->render_target) {
-            warnings.push_back(pass.where.str() + ": pass " + pass.name + " renders into '" + excerpt(target) + "', which is no render target; it draws into the frame");
+            warnings.push_back(pass.where.str() + ": warning: pass " + pass.name + " renders into '" + excerpt(target) + "', which is no render target; it draws into the frame");
             pass.states.render_targets.clear();
             return;
         }
@@ -98,7 +98,7 @@ void apply_technique_script(effect::Technique& technique, const std::vector<bool
             pending_clear = true;
         } else if (c.key == "pass" || c.key == "scriptexternal") {
             if (ordered.size() >= kMaxPasses) {
-                warnings.push_back(technique.where.str() + ": technique " + technique.name + ": its script runs more than 256 passes; the rest are dropped");
+                warnings.push_back(technique.where.str() + ": warning: technique " + technique.name + ": its script runs more than 256 passes; the rest are dropped");
                 break;
             }
             effect::Pass pass;
@@ -112,7 +112,7 @@ void apply_technique_script(effect::Technique& technique, const std::vector<bool
                 for (size_t k = 0; k < technique.passes.size(); ++k)
                     if (technique.passes[k].name == c.value) found = k;
                 if (found == technique.passes.size()) {
-                    warnings.push_back(technique.where.str() + ": technique " + technique.name + ": its script names no pass '" + excerpt(c.value) + "'");
+                    warnings.push_back(technique.where.str() + ": warning: technique " + technique.name + ": its script names no pass '" + excerpt(c.value) + "'");
                     continue;
                 }
                 pass = technique.passes[found];
@@ -146,7 +146,7 @@ void apply_technique_script(effect::Technique& technique, const std::vector<bool
         } else if (c.key == "renderdepthstenciltarget" || c.key == "loopgetindex") {
             // own depth per target; the loop index is not exposed to programs
         } else {
-            warnings.push_back(technique.where.str() + ": technique " + technique.name + ": script command " + excerpt(c.text) + " is not supported and ignored");
+            warnings.push_back(technique.where.str() + ": warning: technique " + technique.name + ": script command " + excerpt(c.text) + " is not supported and ignored");
         }
     }
     if (!ordered.empty()) technique.passes = std::move(ordered);
@@ -168,7 +168,7 @@ bool apply_pass_script(effect::Pass& pass, const std::vector<effect::Annotation>
         } else if (c.key == "renderdepthstenciltarget" || c.key == "pass") {
             // every target has its own depth buffer; passes run in the order they are declared
         } else {
-            warnings.push_back(pass.where.str() + ": pass " + pass.name + ": script command " + excerpt(c.text) + " is not supported and ignored");
+            warnings.push_back(pass.where.str() + ": warning: pass " + pass.name + ": script command " + excerpt(c.text) + " is not supported and ignored");
         }
     }
     check_targets(pass, effect, warnings);

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <algorithm>
 #include <filesystem>
 
 #include "effect/parser.hpp"
@@ -147,6 +148,24 @@ const GpuTexture* EffectResources::acquire(const std::string& texture_name) {
     return find(texture_name);
 }
 
+std::string resolve_legacy_texture_path(const std::string& file, const std::string& effect_path,
+                                        const std::vector<std::string>& texture_dirs) {
+    // Windows paths (..\Media\Textures\Snow.dds): as written with '/', else the file name alone.
+    std::string slashed = file;
+    std::replace(slashed.begin(), slashed.end(), '\\', '/');
+    try {
+        return resolve_texture_path(slashed, effect_path, texture_dirs);
+    } catch (const Error&) {
+        const std::string name = fs::path(slashed).filename().string();
+        if (name.empty() || name == slashed) throw;
+        try {
+            return resolve_texture_path(name, effect_path, texture_dirs);
+        } catch (const Error&) {
+            throw Error("texture file '" + excerpt(file, 200) + "' not found (nor " + excerpt(name, 200) + " next to the effect or in the texture folders)");
+        }
+    }
+}
+
 void EffectResources::add_placeholder(const effect::TextureResource& resource, const std::string& problem) {
     TextureData data = texture::placeholder_texture(resource.type, resource.name);
     std::string sampler = resource.name;  // what --set takes: a sampler reading the texture
@@ -171,6 +190,7 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
     : effect_(effect) {
     for (const auto& resource : effect.textures) {
         if (resource.render_target) continue;
+        std::vector<std::string> legacy_paths;  // legacy effects: where their (Windows-style) names were found
         try {
             if (resource.files.size() == 1 && resource.files[0].rfind("environment:", 0) == 0) {
                 if (!EnvironmentMaps::is_resource_name(resource.files[0]))
@@ -201,13 +221,14 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
             if (effect.legacy && override_file == values.textures.end()) {
                 // A legacy effect opens even when its texture files are missing (docs/legacy-effects.md).
                 std::string problem;
-                if (resource.files.empty()) {
-                    problem = "has no file";
-                } else {
+                if (resource.files.empty()) problem = "has no file";
+                for (const auto& file : resource.files) {
                     try {
-                        for (const auto& file : resource.files) effect.access.require(resolve_texture_path(file, effect.path, texture_dirs), "texture file");
+                        legacy_paths.push_back(resolve_legacy_texture_path(file, effect.path, texture_dirs));
+                        effect.access.require(legacy_paths.back(), "texture file");
                     } catch (const std::exception& error) {
                         problem = error.what();
+                        break;
                     }
                 }
                 if (!problem.empty()) {
@@ -221,6 +242,8 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
             if (override_file != values.textures.end()) {
                 if (!fs::is_regular_file(override_file->second, error)) throw Error(excerpt(override_file->second, 200) + ": no such texture file");
                 paths.push_back(override_file->second);
+            } else if (!legacy_paths.empty()) {
+                paths = legacy_paths;
             } else {
                 for (const auto& file : resource.files) paths.push_back(resolve_texture_path(file, effect.path, texture_dirs));
             }

@@ -80,6 +80,11 @@ private:
 // spectra/library.txt of the source tree (or $FXVIEW_SPECTRA_DIR): the library `spectral:` textures use.
 std::string spectral_library_path();
 
+// The same for legacy effects, whose names are often Windows paths of another machine: with '/' for
+// '\\', else the file name alone next to the effect or in the folders.
+std::string resolve_legacy_texture_path(const std::string& file, const std::string& effect_path,
+                                        const std::vector<std::string>& texture_dirs);
+
 // The file a texture name refers to: absolute, next to the effect, or in one of the folders.
 std::string resolve_texture_path(const std::string& file, const std::string& effect_path,
                                  const std::vector<std::string>& texture_dirs);

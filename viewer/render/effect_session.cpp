@@ -105,6 +105,8 @@ std::optional<std::string> EffectSession::reload() {
 }
 
 void EffectSession::select_technique(const std::string& name) {
+    if (!loaded_->techniques.count(name) && loaded_->effect->find_technique(name))
+        throw UsageError(path_ + ": technique '" + excerpt(name) + "' did not translate or compile (its messages are above)");
     if (!loaded_->techniques.count(name)) {
         std::string names;
         for (const auto& t : loaded_->effect->techniques) names += (names.empty() ? "" : ", ") + t.name;
