@@ -27,7 +27,7 @@ seeds() {
   local harness=$1 out=$2
   mkdir -p "$out"
   case $harness in
-    fuzz_effect) find "$root/effects" "$root/tests/effects" -name '*.fx' -o -name '*.glsl' | while read -r f; do cp "$f" "$out/"; done ;;
+    fuzz_effect) find "$root/effects" "$root/tests/effects" -name '*.fx' -o -name '*.cgfx' -o -name '*.glsl' | while read -r f; do cp "$f" "$out/"; done ;;
     fuzz_texture)
       local i=0 ext
       for ext in png jpg bmp tga hdr exr dds ftxt; do

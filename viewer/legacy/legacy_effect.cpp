@@ -130,6 +130,15 @@ void load_legacy_effect(effect::Effect& effect, const std::string& matrix_conven
     effect.warnings = source.warnings;
     effect.textures = source.textures;
     for (const auto& global : source.globals) add_parameter(effect, global);
+    for (auto& p : effect.parameters) {  // UIAtLeast must name another scalar (as native effects check)
+        if (p.ui.at_least.empty()) continue;
+        const effect::Parameter* other = effect.find_parameter(p.ui.at_least);
+        if (!other || other == &p || effect::component_count(other->type) != 1 || other->array_size > 0 || effect::component_count(p.type) != 1 ||
+            p.array_size > 0 || !other->semantic.empty() || !p.semantic.empty()) {
+            effect.warnings.push_back(p.where.str() + ": warning: UIAtLeast of " + p.name + " names no other scalar parameter; ignored");
+            p.ui.at_least.clear();
+        }
+    }
     const int file_lines = static_cast<int>(std::count(source.code.begin(), source.code.end(), '\n')) + 1;
     for (const auto& legacy : source.techniques) {
         effect::Technique technique;

@@ -55,6 +55,7 @@ effect::UiHints tolerant_ui_hints(const std::vector<effect::Annotation>& annotat
         if (!one.unit.empty()) ui.unit = one.unit;
         if (!one.help.empty()) ui.help = one.help;
         if (!one.items.empty()) ui.items = one.items;
+        if (!one.at_least.empty()) ui.at_least = one.at_least;
     }
     if (ui.min && ui.max && *ui.min > *ui.max) ui.max.reset();
     return ui;
