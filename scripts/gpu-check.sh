@@ -40,3 +40,10 @@ done
 rgb=$("$fxview" pick effects/spectral/thinfilm.fx -t FresnelExact --set Thickness=450 --set Variation=0 --mesh sphere --size 64x64 --at 32,32 --json |
       python3 -c "import json,sys; print(','.join('%.9g' % v for v in json.load(sys.stdin)['rgba'][:3]))")
 "$fxview" plugin run effects/spectral/thinfilm.fx ThicknessFromColour --set TargetColour="$rgb" | tee "$out/film-fit-450nm.txt" || true
+# Issue #24: legacy Cg/HLSL effects on the NVIDIA driver (the translated GLSL is SPIRV-Cross's, the
+# uniform blocks std140): the corpus checks and renders, the thesis' Cg against the CPU references.
+for effect in tests/effects/legacy/*.fx tests/effects/legacy/*.cgfx effects/legacy/*.cgfx; do
+  "$fxview" check "$effect" | tail -1 | tee -a "$out/legacy-check.txt" || true
+  "$fxview" render "$effect" --mesh sphere --size 128x128 --out "$out/legacy-$(basename "$effect").png" 2>/dev/null || true
+done
+"$fxview" compare effects/legacy/wavelength.cgfx --sweep --size 24x24 | tail -3 | tee "$out/compare-legacy-thesis.txt" || true

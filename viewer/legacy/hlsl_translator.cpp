@@ -105,6 +105,43 @@ void make_builtin(spirv_cross::CompilerGLSL& compiler, spirv_cross::ID id, spv::
     compiler.set_decoration(id, spv::DecorationBuiltIn, builtin);
 }
 
+// glslang: the stage's HLSL to legalised SPIR-V, or its messages at file:line; once per entry.
+const SpirvCache::Entry& compile_to_spirv(const StageRequest& request, int file_lines,
+                                          const std::function<effect::SourceLocation(int)>& locate, SpirvCache& cache) {
+    const std::string key = std::to_string(static_cast<int>(request.stage)) + "\n" + request.code;
+    if (const auto found = cache.entries.find(key); found != cache.entries.end()) return found->second;
+    SpirvCache::Entry& entry = cache.entries[key];
+    const EShLanguage stage = glslang_stage(request.stage);
+    glslang::TShader shader(stage);
+    const char* text = request.code.c_str();
+    const int length = static_cast<int>(request.code.size());
+    shader.setStringsWithLengths(&text, &length, 1);
+    shader.setEntryPoint(request.entry.c_str());
+    shader.setEnvInput(glslang::EShSourceHlsl, stage, glslang::EShClientVulkan, 100);
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+    shader.setEnvTargetHlslFunctionality1();  // keeps the semantics as UserSemantic decorations
+    shader.setAutoMapLocations(true);
+    shader.setAutoMapBindings(true);
+    if (!shader.parse(GetDefaultResources(), 100, false, kMessages)) {
+        entry.errors = map_log(shader.getInfoLog(), file_lines, request.where, locate);
+        if (entry.errors.empty()) entry.errors = request.where.str() + ": error: the compiler refused the program\n";
+        return entry;
+    }
+    glslang::TProgram program;
+    program.addShader(&shader);
+    if (!program.link(kMessages) || !program.mapIO()) {
+        entry.errors = map_log(program.getInfoLog(), file_lines, request.where, locate);
+        if (entry.errors.empty()) entry.errors = request.where.str() + ": error: the program does not link\n";
+        return entry;
+    }
+    glslang::SpvOptions options;
+    options.disableOptimizer = false;  // HLSL needs the legalisation passes (samplers passed to functions, ...)
+    spv::SpvBuildLogger logger;
+    glslang::GlslangToSpv(*program.getIntermediate(stage), entry.spirv, &logger, &options);
+    return entry;
+}
+
 }  // namespace
 
 std::string canonical_semantic(const std::string& semantic) {
@@ -117,7 +154,7 @@ std::string canonical_semantic(const std::string& semantic) {
 }
 
 TranslatedPass translate_pass(const std::vector<StageRequest>& stages, int file_lines,
-                              const std::function<effect::SourceLocation(int)>& locate) {
+                              const std::function<effect::SourceLocation(int)>& locate, SpirvCache& cache) {
     ensure_glslang_process();
     TranslatedPass result;
     struct Compiled {
@@ -130,33 +167,12 @@ TranslatedPass translate_pass(const std::vector<StageRequest>& stages, int file_
             result.errors += request.where.str() + ": error: geometry programs of legacy effects are not supported\n";
             continue;
         }
-        const EShLanguage stage = glslang_stage(request.stage);
-        glslang::TShader shader(stage);
-        const char* text = request.code.c_str();
-        const int length = static_cast<int>(request.code.size());
-        shader.setStringsWithLengths(&text, &length, 1);
-        shader.setEntryPoint(request.entry.c_str());
-        shader.setEnvInput(glslang::EShSourceHlsl, stage, glslang::EShClientVulkan, 100);
-        shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
-        shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
-        shader.setEnvTargetHlslFunctionality1();  // keeps the semantics as UserSemantic decorations
-        shader.setAutoMapLocations(true);
-        shader.setAutoMapBindings(true);
-        if (!shader.parse(GetDefaultResources(), 100, false, kMessages)) {
-            result.errors += map_log(shader.getInfoLog(), file_lines, request.where, locate);
+        const SpirvCache::Entry& entry = compile_to_spirv(request, file_lines, locate, cache);
+        if (!entry.errors.empty()) {
+            result.errors += entry.errors;
             continue;
         }
-        glslang::TProgram program;
-        program.addShader(&shader);
-        if (!program.link(kMessages) || !program.mapIO()) {
-            result.errors += map_log(program.getInfoLog(), file_lines, request.where, locate);
-            continue;
-        }
-        std::vector<unsigned> spirv;
-        glslang::SpvOptions options;
-        options.disableOptimizer = false;  // HLSL needs the legalisation passes (samplers passed to functions, ...)
-        spv::SpvBuildLogger logger;
-        glslang::GlslangToSpv(*program.getIntermediate(stage), spirv, &logger, &options);
+        std::vector<unsigned> spirv = entry.spirv;
         try {
             auto compiler = std::make_unique<spirv_cross::CompilerGLSL>(std::move(spirv));
             spirv_cross::CompilerGLSL::Options glsl = compiler->get_common_options();

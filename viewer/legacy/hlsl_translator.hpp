@@ -31,10 +31,21 @@ struct TranslatedPass {
     std::string errors;  // "file:line: message" lines; empty when every stage translated
 };
 
+// SPIR-V of stages already compiled for an effect, by stage and generated entry: passes that share
+// a program (a screen-quad vertex program) compile it once.
+struct SpirvCache {
+    struct Entry {
+        std::vector<unsigned> spirv;
+        std::string errors;
+    };
+    std::map<std::string, Entry> entries;
+};
+
 // `locate` maps a 1-based line of the code to its file:line (the generated entry's lines are past
-// `file_lines` and go to the compile statement).
+// `file_lines` and go to the compile statement). Stage requests' code must be the same file text
+// (plus its entry) for every call that shares `cache`.
 TranslatedPass translate_pass(const std::vector<StageRequest>& stages, int file_lines,
-                              const std::function<effect::SourceLocation(int line)>& locate);
+                              const std::function<effect::SourceLocation(int line)>& locate, SpirvCache& cache);
 
 // The canonical form of a varying semantic: upper case, a missing index as 0, SV_Target as COLOR.
 std::string canonical_semantic(const std::string& semantic);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <set>
 
 #include "core/text.hpp"
 #include "effect/lexer.hpp"
@@ -54,7 +55,8 @@ const FunctionSignature* find_function(const LegacySource& source, const Compile
 }
 
 // Returns whether the pass's own script chose its render targets.
-bool add_pass(effect::Effect& effect, const LegacySource& source, effect::Technique& technique, const LegacyPass& legacy, int file_lines) {
+bool add_pass(effect::Effect& effect, const LegacySource& source, effect::Technique& technique, const LegacyPass& legacy, int file_lines,
+              SpirvCache& cache) {
     effect::Pass pass;
     pass.name = legacy.name;
     pass.where = legacy.where;
@@ -86,7 +88,7 @@ bool add_pass(effect::Effect& effect, const LegacySource& source, effect::Techni
         translated = translate_pass(requests, file_lines, [&](int line) {
             // Offsets of the code are offsets of the preprocessed text: SourceMap knows their origin.
             return effect.sources.locate_line(line);
-        });
+        }, cache);
         errors = translated.errors;
     }
     for (const ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
@@ -122,9 +124,45 @@ bool is_legacy_effect(const effect::Effect& effect) {
     return compiles;
 }
 
+// glslang's HLSL parser descends recursively: nesting is bounded before it sees the code, as
+// nothing real nests deeper than a few dozen levels.
+void check_nesting(const effect::Effect& effect, const std::string& code) {
+    constexpr int kMaxDepth = 256;
+    int depth = 0;
+    bool in_string = false;
+    for (size_t i = 0; i < code.size(); ++i) {
+        const char c = code[i];
+        if (c == '"') in_string = !in_string;
+        if (in_string || c == '\n') { if (c == '\n') in_string = false; continue; }
+        if (c == '(' || c == '[' || c == '{') ++depth;
+        if (c == ')' || c == ']' || c == '}') depth = std::max(0, depth - 1);
+        if (depth > kMaxDepth) throw effect::EffectError(effect.sources.locate(i), "brackets nested deeper than " + std::to_string(kMaxDepth) + " levels");
+    }
+}
+
+// Every stage compile reads the whole file: the compile-bytes budget bounds their sum, as for native effects.
+void check_compile_budget(const effect::Effect& effect, const LegacySource& source) {
+    std::int64_t compiled = 0;
+    std::set<std::string> programs;  // stage, function and arguments: each compiled once
+    for (const auto& technique : source.techniques)
+        for (const auto& pass : technique.passes) {
+            for (const auto& p : pass.programs) {
+                std::string key = std::to_string(static_cast<int>(p.stage)) + " " + p.function;
+                for (const auto& a : p.arguments) key += "\n" + a;
+                if (programs.insert(key).second) compiled += static_cast<std::int64_t>(source.code.size());
+            }
+            if (compiled > effect.limits.compile_bytes)
+                throw effect::EffectError(pass.where, "technique " + technique.name + " brings the Cg/HLSL compiled for this effect to " +
+                                                          std::to_string(compiled) + " bytes, over the budget compile-bytes = " +
+                                                          std::to_string(effect.limits.compile_bytes) + " (raise it with --limit compile-bytes=N)");
+        }
+}
+
 void load_legacy_effect(effect::Effect& effect, const std::string& matrix_convention) {
     effect.sources.replace_text(preprocess_legacy(effect));
+    check_nesting(effect, effect.sources.text());
     const LegacySource source = parse_legacy_source(effect);
+    check_compile_budget(effect, source);
     effect.legacy = true;
     effect.row_vectors = row_vectors_for(effect, source, matrix_convention);
     effect.warnings = source.warnings;
@@ -140,13 +178,14 @@ void load_legacy_effect(effect::Effect& effect, const std::string& matrix_conven
         }
     }
     const int file_lines = static_cast<int>(std::count(source.code.begin(), source.code.end(), '\n')) + 1;
+    SpirvCache cache;
     for (const auto& legacy : source.techniques) {
         effect::Technique technique;
         technique.name = legacy.name;
         technique.where = legacy.where;
         technique.annotations = legacy.annotations;
         std::vector<bool> sets_targets;
-        for (const auto& pass : legacy.passes) sets_targets.push_back(add_pass(effect, source, technique, pass, file_lines));
+        for (const auto& pass : legacy.passes) sets_targets.push_back(add_pass(effect, source, technique, pass, file_lines, cache));
         apply_technique_script(technique, sets_targets, effect, effect.warnings);
         effect.techniques.push_back(std::move(technique));
     }

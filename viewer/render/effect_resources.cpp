@@ -173,16 +173,20 @@ void EffectResources::add_placeholder(const effect::TextureResource& resource, c
         if (effect::is_sampler_type(p.type) && p.texture == resource.name) sampler = p.name;
     warnings_.push_back(resource.where.str() + ": warning: texture " + resource.name + " " + excerpt(problem, 300) + "; showing a " +
                         texture::placeholder_kind(resource.type, resource.name) + " instead (replace it with --set " + sampler + "=FILE)");
+    add_texture(resource.name, std::move(data), false);
+}
+
+void EffectResources::add_texture(const std::string& name, TextureData data, bool srgb) {
     GpuTexture gpu;
-    gpu.texture = gl::upload_texture(data, {false, true});
+    gpu.texture = gl::upload_texture(data, {srgb, true});
     gpu.type = data.type;
     gpu.format = data.format;
     gpu.width = data.width();
     gpu.height = data.height();
     gpu.levels = data.levels();
     gpu.source = data.source;
-    textures_.emplace(resource.name, std::move(gpu));
-    cpu_copies_.emplace(resource.name, std::move(data));
+    textures_.emplace(name, std::move(gpu));
+    cpu_copies_.emplace(name, std::move(data));
 }
 
 EffectResources::EffectResources(const effect::Effect& effect, const effect::ParameterValues& values,
@@ -273,16 +277,7 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
             file_texture_bytes_ += bytes;
             check_limit(effect.limits, "effect-texture-bytes", file_texture_bytes_, data.source, "textures of the effect, in all");
             if (stored != data.format) data = texture::convert(data, stored);  // no copy when nothing changes
-            GpuTexture gpu;
-            gpu.texture = gl::upload_texture(data, {resource.srgb, true});
-            gpu.type = data.type;
-            gpu.format = data.format;
-            gpu.width = data.width();
-            gpu.height = data.height();
-            gpu.levels = data.levels();
-            gpu.source = data.source;
-            textures_.emplace(resource.name, std::move(gpu));
-            cpu_copies_.emplace(resource.name, std::move(data));
+            add_texture(resource.name, std::move(data), resource.srgb);
         } catch (const effect::EffectError&) {
             throw;
         } catch (const std::exception& error) {

@@ -60,6 +60,7 @@ public:
 
 private:
     void add_placeholder(const effect::TextureResource& resource, const std::string& problem);
+    void add_texture(const std::string& name, texture::TextureData data, bool srgb);  // uploads it, keeps the CPU copy
     std::vector<std::string> warnings_;
     // Each render target's size for a frame, checked (with the file textures) against the effect's
     // budgets before anything is allocated; EffectError at the target's declaration.
