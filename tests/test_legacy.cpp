@@ -304,6 +304,9 @@ TEST_CASE("DirectX SDK and Cg Toolkit idioms: float4x3 World, ViewPosition, unty
     CHECK(!cg.row_vectors);
     CHECK(parameter(cg, "fxview_glstate_mvp").semantic == "WORLDVIEWPROJECTION");
     CHECK(parameter(cg, "fxview_glstate_light0_position").semantic == "VIEWLIGHTPOSITION");
+    CHECK(parameter(cg, "Decal").texture == "decalTex");  // uniform texture2D decalTex < ... >
+    REQUIRE(cg.find_texture("decalTex") != nullptr);
+    CHECK(cg.find_texture("decalTex")->files == std::vector<std::string>{"missing_decal.png"});
 
     const image::FloatImage reference = debug_view();
     CHECK(overlap(render_effect("dx_sdk_idioms.fx"), reference) > 0.98);

@@ -42,6 +42,11 @@ void LegacyParser::parse_string_global() {
 
 void LegacyParser::parse_texture() {
     const Token keyword = next();
+    parse_texture_after(keyword, keyword.begin);
+}
+
+// The rest of `[uniform] texture NAME ...;` once its keyword is read; the declaration from `begin` is blanked.
+void LegacyParser::parse_texture_after(const Token& keyword, size_t begin) {
     effect::TextureResource texture;
     const Token name = expect_identifier("a texture name");
     texture.name = name.text;
@@ -56,7 +61,7 @@ void LegacyParser::parse_texture() {
     const auto annotations = parse_annotations();
     if (accept("=")) parse_value({";"});
     expect(";", "after texture " + texture.name);
-    blank(keyword.begin, last_end_);
+    blank(begin, last_end_);
     if (semantic == "renderdepthstenciltarget") return;  // every pass target has its own depth buffer
     texture.render_target = semantic == "rendercolortarget";
     for (const auto& a : annotations)
@@ -96,6 +101,10 @@ void LegacyParser::parse_declaration() {
     }
     const Token type = next();
     if (type.kind != TokenKind::Identifier) fail(type, "unexpected '" + excerpt(type.text) + "' at the top level");
+    if (is_texture_keyword(type.text)) {  // CgFX: uniform texture2D NAME < ... >;
+        parse_texture_after(type, first.begin);
+        return;
+    }
     if (is(peek(), "<")) {  // vector<float, 4>, matrix<float, 4, 4>
         const Token open = next();
         while (!accept(">"))

@@ -101,6 +101,7 @@ private:
     void parse_string_global();
 
     void parse_texture();
+    void parse_texture_after(const Token& keyword, size_t begin);
 
     // TYPE NAME [N] [: SEMANTIC] [<annotations>] [= value | = sampler_state { ... }] ; or a function.
     void parse_declaration();
