@@ -19,6 +19,9 @@ void add_effect_options(CLI::App& command, EffectOptions& options) {
         ->allow_extra_args(false);
     command.add_option("--preset", options.preset, "Load parameter values from a JSON preset (before --set)");
     command.add_option("--save-preset", options.save_preset, "Save the parameter values used as a JSON preset");
+    command.add_option("--texture", options.textures,
+                       "Texture file for a texture or a sampler NAME=FILE (replaces its ResourceName, or a legacy effect's placeholder)")
+        ->allow_extra_args(false);
     add_access_options(command, options.access);
 }
 
@@ -68,7 +71,9 @@ effect::LoadOptions effect_load_options(const AccessOptions& access) {
 effect::LoadOptions effect_load_options(const EffectOptions& options) {
     effect::LoadOptions load_options = effect_load_options(options.access);
     // A texture file named on the command line (--set Sampler=FILE) is the user's own choice.
-    for (const auto& assignment : options.sets)
+    std::vector<std::string> assignments = options.sets;
+    assignments.insert(assignments.end(), options.textures.begin(), options.textures.end());
+    for (const auto& assignment : assignments)
         if (const size_t equals = assignment.find('='); equals != std::string::npos) {
             std::error_code error;
             const std::string value = assignment.substr(equals + 1);
@@ -87,6 +92,16 @@ std::unique_ptr<render::EffectSession> open_effect_session(const EffectOptions& 
         if (options.technique.empty() && !preset.technique.empty()) session->select_technique(preset.technique);
     }
     for (const auto& assignment : options.sets) effect::set_value_from_text(session->effect(), session->values(), assignment);
+    for (const auto& assignment : options.textures) {  // --texture NAME=FILE: a sampler, or a texture object by its name
+        const size_t equals = assignment.find('=');
+        if (equals == std::string::npos || equals == 0 || equals + 1 == assignment.size())
+            throw UsageError("--texture needs NAME=FILE, got '" + excerpt(assignment) + "'");
+        const std::string name = assignment.substr(0, equals);
+        const effect::Parameter* sampler = session->effect().find_parameter(name);
+        if (sampler && effect::is_sampler_type(sampler->type)) effect::set_value_from_text(session->effect(), session->values(), assignment);
+        else if (session->effect().find_texture(name)) session->values().textures[name] = assignment.substr(equals + 1);
+        else throw UsageError("--texture: the effect has no texture or sampler '" + excerpt(name) + "'");
+    }
     effect::check_constraints(session->effect(), session->values());
     if (!session->values().textures.empty()) session->reload_textures();
     return session;

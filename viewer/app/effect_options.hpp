@@ -28,6 +28,7 @@ struct EffectOptions {
     std::vector<std::string> sets;
     std::string preset;       // JSON preset applied before --set
     std::string save_preset;  // writes the values used
+    std::vector<std::string> textures;  // --texture NAME=FILE: a texture object or a sampler
     AccessOptions access;
 };
 

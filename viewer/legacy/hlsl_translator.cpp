@@ -26,7 +26,8 @@ const EShMessages kMessages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVu
 
 // glslang's "ERROR: 0:12: 'x' : undeclared identifier" lines as "file:line: error: 'x' : undeclared identifier".
 std::string map_log(const std::string& log, int file_lines, const effect::SourceLocation& entry,
-                    const std::function<effect::SourceLocation(int)>& locate) {
+                    const std::function<effect::SourceLocation(int)>& locate, const std::string& program) {
+    const std::string in = program.empty() ? "" : " (while compiling the " + program + ")";
     std::string out;
     std::istringstream lines(log);
     for (std::string line; std::getline(lines, line);) {
@@ -43,13 +44,13 @@ std::string map_log(const std::string& log, int file_lines, const effect::Source
         }
         if (number == 0) {
             if (rest.find("compilation errors") != std::string::npos || rest.find("compilation terminated") != std::string::npos) continue;
-            out += entry.str() + ": error: " + excerpt(rest, 300) + "\n";
+            out += entry.str() + ": error: " + excerpt(rest, 300) + in + "\n";
             continue;
         }
         std::string message = rest.substr(second + 1);
         message.erase(0, message.find_first_not_of(' '));
         const effect::SourceLocation where = number > file_lines ? entry : locate(number);
-        out += where.str() + ": error: " + excerpt(message, 300) + (number > file_lines ? " (in the entry generated for the compile statement)" : "") + "\n";
+        out += where.str() + ": error: " + excerpt(message, 300) + (number > file_lines ? " (in the entry generated for the compile statement)" : in) + "\n";
     }
     return out;
 }
@@ -124,14 +125,14 @@ const SpirvCache::Entry& compile_to_spirv(const StageRequest& request, int file_
     shader.setAutoMapLocations(true);
     shader.setAutoMapBindings(true);
     if (!shader.parse(GetDefaultResources(), 100, false, kMessages)) {
-        entry.errors = map_log(shader.getInfoLog(), file_lines, request.where, locate);
+        entry.errors = map_log(shader.getInfoLog(), file_lines, request.where, locate, request.program);
         if (entry.errors.empty()) entry.errors = request.where.str() + ": error: the compiler refused the program\n";
         return entry;
     }
     glslang::TProgram program;
     program.addShader(&shader);
     if (!program.link(kMessages) || !program.mapIO()) {
-        entry.errors = map_log(program.getInfoLog(), file_lines, request.where, locate);
+        entry.errors = map_log(program.getInfoLog(), file_lines, request.where, locate, request.program);
         if (entry.errors.empty()) entry.errors = request.where.str() + ": error: the program does not link\n";
         return entry;
     }

@@ -19,6 +19,7 @@ struct StageRequest {
     std::string code;   // whole Cg/HLSL text, the generated entry appended after the file's lines
     std::string entry;  // the generated entry function
     effect::SourceLocation where;  // the compile statement: where errors in the generated entry go
+    std::string program;           // for messages: "vertex program std_VS"
 };
 
 struct TranslatedStage {

@@ -77,7 +77,8 @@ bool add_pass(effect::Effect& effect, const LegacySource& source, effect::Techni
             errors += statement.where.str() + ": error: " + wrapper_error + "\n";
             continue;
         }
-        requests.push_back({statement.stage, source.code + "\n" + wrapper, entry, statement.where});
+        const char* kind = statement.stage == ShaderStage::Vertex ? "vertex program " : statement.stage == ShaderStage::Fragment ? "fragment program " : "geometry program ";
+        requests.push_back({statement.stage, source.code + "\n" + wrapper, entry, statement.where, kind + statement.function});
     }
     const bool has_vertex = std::any_of(legacy.programs.begin(), legacy.programs.end(), [](const auto& s) { return s.stage == ShaderStage::Vertex; });
     const bool has_fragment = std::any_of(legacy.programs.begin(), legacy.programs.end(), [](const auto& s) { return s.stage == ShaderStage::Fragment; });
