@@ -314,3 +314,16 @@ TEST_CASE("DirectX SDK and Cg Toolkit idioms: float4x3 World, ViewPosition, unty
     CHECK(overlap(toolkit, reference) > 0.98);
     CHECK(luminance(toolkit.pixel(44, 20)) > luminance(toolkit.pixel(20, 44)) + 0.05);  // lit towards the light
 }
+
+TEST_CASE("which files are legacy: .cgfx always, .fx without GLSL blocks whose passes compile functions") {
+    const std::string native = temp_path("native_compile.fx");
+    {
+        std::ofstream out(native);  // a native effect in CgFX spelling: `shader` blocks and `compile PROFILE name()`
+        out << "#include \"standard.glsl\"\n"
+               "shader FS { layout(location = 0) out vec4 c; void main() { c = vec4(1); } }\n"
+               "technique T { pass p { VertexShader = compile glslv StandardVS(); FragmentShader = compile glslf FS(); } }\n";
+    }
+    CHECK(!effect::load_effect(native, load_options()).legacy);
+    CHECK(effect::load_effect(kLegacy + "/plastic_dx9.fx", load_options()).legacy);
+    CHECK(effect::load_effect(kLegacy + "/plastic_cg.cgfx", load_options()).legacy);
+}

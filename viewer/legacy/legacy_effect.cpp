@@ -117,7 +117,12 @@ bool is_legacy_effect(const effect::Effect& effect) {
     if (lower_extension(effect.path) != ".fx") return false;
     effect::Lexer lexer(effect.sources.text());
     bool compiles = false;
+    effect::Token before, last;  // `shader NAME {` is a native GLSL block too
     for (effect::Token t = lexer.next(); t.kind != effect::TokenKind::End; t = lexer.next()) {
+        if (t.kind == effect::TokenKind::Punct && t.text == "{" && before.kind == effect::TokenKind::Identifier && before.text == "shader" && last.kind == effect::TokenKind::Identifier)
+            return false;
+        before = last;
+        last = t;
         if (t.kind != effect::TokenKind::Identifier) continue;
         if (t.text == "GLSLShader") return false;
         if (t.text == "compile") compiles = true;
