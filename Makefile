@@ -41,6 +41,8 @@ run: build
 	done
 	$(FXVIEW) render effects/brdf/analytic.fx --preset effects/brdf/presets/gold.json --set Roughness=0.08 --environment sky:25,4500 --mesh knot --size 512x512 --out out/knot-gold-sky.png
 	$(FXVIEW) compare effects/brdf/analytic.fx --technique PBR --environment studio --ground-truth --size 96x96 --heatmap out/compare-ibl.png
+	$(FXVIEW) render effects/legacy/wavelength.cgfx --mesh knot --size 512x512 --out out/knot-thesis-cg.png
+	$(FXVIEW) render tests/effects/legacy/glow.fx --mesh sphere --size 512x512 --out out/sphere-legacy-glow.png
 	$(FXVIEW) render effects/spectral/cd.fx --technique Grating --mesh disc --camera-rotate 50,0,0 --size 512x512 --out out/disc-cd.png
 	$(FXVIEW) spectra plot D65 A F11 TCS09 --out out/spectra.png
 	$(FXVIEW) compare effects/spectral/wavelength.fx --heatmap out/compare.png
