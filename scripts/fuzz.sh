@@ -9,7 +9,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 action=${1:-replay}
-harnesses=(fuzz_effect fuzz_brdf_file fuzz_texture fuzz_spectral fuzz_brdf_data fuzz_obj fuzz_preset)
+harnesses=(fuzz_effect fuzz_brdf_file fuzz_texture fuzz_spectral fuzz_brdf_data fuzz_obj fuzz_preset fuzz_environment fuzz_plugin fuzz_values)
 # Every report is fatal; memory per input is bounded the way users expect fxview to bound it.
 export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1:allocator_may_return_null=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
@@ -40,6 +40,15 @@ seeds() {
     fuzz_brdf_file) find "$root/tests/effects" -name '*.brdf' | while read -r f; do cp "$f" "$out/"; done ;;
     fuzz_brdf_data) cp "$root/textures/sample-brdf.csv" "$out/" ;;
     fuzz_preset) find "$root/effects" -name '*.json' | while read -r f; do cp "$f" "$out/"; done ;;
+    fuzz_environment)  # the selector byte as the harness reads it: format index, +8 for six faces
+      local j=0 e
+      for e in png hdr exr dds; do
+        find "$root/textures" "$root/tests/effects" -iname "*.$e" -size -256k | head -3 | while read -r f; do
+          { printf "\\$(printf '%03o' "$j")"; cat "$f"; } >"$out/$(basename "$f").one"
+          { printf "\\$(printf '%03o' $((j + 8)))"; cat "$f"; } >"$out/$(basename "$f").six"
+        done
+        j=$((j + 1))
+      done ;;
   esac
 }
 
@@ -75,7 +84,9 @@ case $action in
       cp -n "$root/tests/fuzz/corpus/$harness/"* "$corpus/" 2>/dev/null || true
       seeds "$harness" "$corpus"
       echo "fuzz: $harness for ${seconds}s"
-      (cd "$dir/fuzz-crashes" && "$dir/fuzz/$harness" "${limits[@]}" -max_len=65536 -max_total_time="$seconds" \
+      dict=()
+      [[ -f "$root/tests/fuzz/$harness.dict" ]] && dict=(-dict="$root/tests/fuzz/$harness.dict")
+      (cd "$dir/fuzz-crashes" && "$dir/fuzz/$harness" "${limits[@]}" "${dict[@]}" -max_len=65536 -max_total_time="$seconds" \
         -artifact_prefix="$dir/fuzz-crashes/$harness-" "$corpus") || echo "fuzz: $harness found a problem: see $dir/fuzz-crashes"
     done ;;
   *) echo "usage: scripts/fuzz.sh build|replay|campaign [SECONDS] [BUILD]" >&2; exit 2 ;;

@@ -3,7 +3,7 @@
 // read. One case per defect class found by fuzzing (issue #9); tests/fuzz replays the raw inputs.
 #include <doctest/doctest.h>
 
-#include "test_support.hpp"
+#include "hostile_support.hpp"
 
 #include <cstdint>
 #include <cstring>
@@ -16,29 +16,11 @@ using fxview::test::run;
 using fxview::test::temp_path;
 namespace fs = std::filesystem;
 
-namespace {
-
-const std::string kShaders = R"(GLSLShader VS { in vec3 position; void main() { gl_Position = vec4(position, 1.0); } }
-GLSLShader FS { out vec4 color; void main() { color = vec4(1.0); } }
-)";
-const std::string kTechnique = "technique T { pass P { VertexShader = VS; FragmentShader = FS; } }\n";
-
-// A fresh folder per case, so that the file-access policy sees only what the case puts there.
-std::string folder(const std::string& name) {
-    const std::string path = temp_path("hostile/" + name);
-    fs::remove_all(path);
-    fs::create_directories(path);
-    return path;
-}
-
-std::string write(const std::string& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-}
-
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-}  // namespace
+using fxview::test::folder;
+using fxview::test::has;
+using fxview::test::kShaders;
+using fxview::test::kTechnique;
+using fxview::test::write;
 
 TEST_CASE("an OBJ face naming a normal or uv that no line defines is an error at its line") {
     const std::string dir = folder("obj");
@@ -210,7 +192,8 @@ TEST_CASE("malformed presets, grids, MERL headers and spectra are rejected with 
     std::memcpy(merl.data(), dims, sizeof dims);
     const Result overflow = run("fit " + write(dir + "/overflow.binary", merl + std::string(64, '\0')));
     CHECK(overflow.exit_code == 1);
-    CHECK(has(overflow.err, "overflow.binary: not a MERL BRDF (dimensions 1073741824 x 1073741824 x 1073741824"));
+    CHECK(has(overflow.err, "overflow.binary: not a MERL BRDF"));
+    CHECK(!has(overflow.err, "1073741824"));  // a file's first bytes never reach a message
 
     const std::string cgats = "CGATS.17\nSPECTRAL_START_NM 380\nSPECTRAL_END_NM 780\nSPECTRAL_BANDS 1e300\nBEGIN_DATA_FORMAT\nSAMPLE_ID SPEC_380 SPEC_780\n"
                               "END_DATA_FORMAT\nBEGIN_DATA\n\"A\" 1 2\nEND_DATA\n";

@@ -122,6 +122,25 @@ TEST_CASE("error messages become file:line places; each editor gets its own way 
     std::filesystem::remove(file);
 }
 
+TEST_CASE("a file name reaches an editor only as a file name, never as an option or a vi command") {
+    // An include named "+!touch X" made vim run the command when its error was clicked (issue 26).
+    const std::string cwd = std::filesystem::current_path().lexically_normal().string();
+    const std::string hostile = "+!touch fxview-pwned";
+    for (const char* editor : {"vim", "vi", "nano", "emacs", "code", "subl", "gedit", "kate"}) {
+        const auto command = ui::editor_command(editor, hostile, 3);
+        for (size_t i = 1; i < command.size(); ++i) {
+            const std::string& word = command[i];
+            if (word == "--goto" || word == "+3") continue;  // the line, written by fxview
+            CHECK_MESSAGE(word.front() == '/', editor << " gets '" << word << "'");
+            CHECK(word.find(hostile) != std::string::npos);  // still the same file
+        }
+    }
+    CHECK(ui::editor_file_argument("-rf") == cwd + "/-rf");
+    CHECK(ui::editor_file_argument("/abs/x.fx") == "/abs/x.fx");
+    // A long compiler line is scanned, not matched by a recursive regex.
+    CHECK(ui::error_locations(std::string(200000, ' ') + ":1:").empty());
+}
+
 TEST_CASE("the Open dialog lists one folder: its subfolders and effect files only") {
     const auto top = ui::list_folder(FXVIEW_SOURCE_EFFECTS_DIR, {".fx"});
     std::vector<std::string> folders, files;

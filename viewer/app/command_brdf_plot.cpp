@@ -65,10 +65,10 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
     command->add_option("--measured", o->measured, "A MERL .binary file to overlay (repeatable; polar and albedo views)");
     command->add_option("--view", o->view, "polar (default), albedo, lobe, slice or sphere")
         ->check(CLI::IsMember({"polar", "albedo", "lobe", "slice", "sphere"}));
-    command->add_option("--phi-d", o->phi_d, "Difference azimuth of the slice view, degrees")->check(CLI::Range(0.0, 180.0));
+    command->add_option("--phi-d", o->phi_d, "Difference azimuth of the slice view, degrees")->check(finite_range(0.0, 180.0));
     command->add_option("--out", o->out, "PNG (or EXR/PFM for the sphere) to write")->required();
     command->add_option("--csv", o->csv, "Also write the plotted values as CSV");
-    command->add_option("--incidence", o->incidence, "Angle of incidence for the polar view, degrees")->check(CLI::Range(0.0, 89.0));
+    command->add_option("--incidence", o->incidence, "Angle of incidence for the polar view, degrees")->check(finite_range(0.0, 89.0));
     command->add_flag("--log", o->logarithmic, "Logarithmic radius in the polar view (four decades)");
     command->add_option("--size", o->size, "Image size WxH");
     command->add_option("--set", o->sets, "NAME=VALUE for every file's parameters (repeatable)");

@@ -6,6 +6,8 @@
 #include "context/context.hpp"
 #include "effect/effect_program.hpp"
 #include "effect/parser.hpp"
+#include "effect/preset.hpp"
+#include "image/display_transform.hpp"
 #include "plugin/plugin.hpp"
 #include "render/effect_resources.hpp"
 
@@ -23,7 +25,30 @@ void print_error(const std::string& message) {
 
 // Checks one effect; returns the number of problems found. Nothing a file does stops the check of
 // the next file: every exception is reported against the file it came from.
-int check_effect(const std::string& path, const effect::LoadOptions& load_options, bool dump) {
+// A preset against the effect (docs/preset.schema.json): known keys only, every value by the rule of
+// values, the technique the effect's, the scene's files readable under the effect's policy.
+int check_preset(const std::string& preset_path, const effect::Effect& effect) {
+    try {
+        effect::ParameterValues values = effect::default_values(effect);
+        const effect::Preset preset = effect::load_preset(preset_path, effect, values);
+        if (!preset.technique.empty() && !effect.find_technique(preset.technique))
+            throw Error(preset_path + ":1: preset technique '" + excerpt(preset.technique) + "' is not one of " + effect.path + "'s");
+        FileAccessPolicy access = effect.access;
+        const effect::PresetScene scene = effect::load_preset_scene(preset_path, effect.limits, access);
+        if (scene.tone_map) try {
+                image::parse_tone_map(*scene.tone_map);
+            } catch (const UsageError& error) {
+                throw Error(scene.where("tone_map") + error.what());
+            }
+        std::cout << preset_path << ": ok (preset of " << effect.path << ")\n";
+        return 0;
+    } catch (const std::exception& error) {
+        print_error(error.what());
+        return 1;
+    }
+}
+
+int check_effect(const std::string& path, const effect::LoadOptions& load_options, bool dump, const std::string& preset) {
     try {
         const effect::Effect effect = effect::load_effect(path, load_options);
         if (dump)
@@ -62,6 +87,7 @@ int check_effect(const std::string& path, const effect::LoadOptions& load_option
         if (broken == 0)
             std::cout << path << ": ok (" << effect.techniques.size() << " techniques"
                       << (effect.plugins.empty() ? "" : ", " + std::to_string(effect.plugins.size()) + " plugins") << ")\n";
+        if (!preset.empty()) broken += check_preset(preset, effect);
         return broken;
     } catch (const effect::EffectError& error) {
         print_error(error.what());
@@ -80,6 +106,7 @@ CommandRunner add_check_command(CLI::App& app) {
         std::vector<std::string> paths;
         std::string backend = "egl";
         bool dump = false;
+        std::string preset;
         AccessOptions access;
     };
     auto options = std::make_shared<Options>();
@@ -88,6 +115,8 @@ CommandRunner add_check_command(CLI::App& app) {
     command->add_option("effects", options->paths, "Effect files (each is checked and reported)")->required();
     command->add_option("--backend", options->backend, "GL context used to compile")->capture_default_str();
     command->add_flag("--dump", options->dump, "Print the GLSL of every stage as it goes to the driver (translated, for Cg/HLSL effects)");
+    command->add_option("--preset", options->preset,
+                        "Also check a preset against each effect: its keys (docs/preset.schema.json), values, technique and scene");
     add_access_options(*command, options->access);
     return [options] {
         const effect::LoadOptions load_options = effect_load_options(options->access);
@@ -96,7 +125,7 @@ CommandRunner add_check_command(CLI::App& app) {
         context_options.window_visible = false;
         const auto context = context::create_context(context_options);
         int failed_files = 0;
-        for (const auto& path : options->paths) failed_files += check_effect(path, load_options, options->dump) > 0 ? 1 : 0;
+        for (const auto& path : options->paths) failed_files += check_effect(path, load_options, options->dump, options->preset) > 0 ? 1 : 0;
         if (options->paths.size() > 1)
             std::cout << options->paths.size() - static_cast<size_t>(failed_files) << " of " << options->paths.size() << " effects ok\n";
         return failed_files == 0 ? 0 : 1;

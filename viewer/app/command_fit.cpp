@@ -211,7 +211,7 @@ CommandRunner add_fit_command(CLI::App& app) {
                         "lacquer measurements): fit base / (1 - Fresnel) (0: no coat)")
         ->capture_default_str();
     command->add_option("--limit", o->fit.limit_deg, "Leave out light and camera angles beyond this (degrees)")
-        ->capture_default_str()->check(CLI::Range(5.0, 90.0));
+        ->capture_default_str()->check(finite_range(5.0, 90.0));
     command->add_option("--iterations", o->fit.iterations, "Levenberg-Marquardt iterations of stage 1")
         ->capture_default_str()->check(CLI::Range(1, 100000));
     command->add_option("--solver", o->solver,
@@ -232,8 +232,8 @@ CommandRunner add_fit_command(CLI::App& app) {
     command->add_option("--out,-o", o->out, "Write the parameters as CSV (with --model all: the ranking)");
     command->add_option("--preset", o->preset, "Write a preset of effects/brdf/analytic.fx with the model's technique (--model all: the best)");
     command->add_option("--preview", o->preview, "Write measured | model | difference as an image (PNG, EXR, PFM)");
-    command->add_option("--brighten", o->preview_options.brighten, "Preview: multiply values by this")->capture_default_str();
-    command->add_option("--gamma", o->preview_options.gamma, "Preview: raise values to 1/gamma")->capture_default_str()->check(CLI::Range(0.1, 10.0));
+    command->add_option("--brighten", o->preview_options.brighten, "Preview: multiply values by this")->capture_default_str()->check(finite_range(1e-9, 1e9));
+    command->add_option("--gamma", o->preview_options.gamma, "Preview: raise values to 1/gamma")->capture_default_str()->check(finite_range(0.1, 10.0));
     command->add_option("--progress", o->progress, "Thesis solver: write the error number e per iteration of its first stage as CSV");
     command->add_flag("--json", o->json, "Print the result as JSON");
     return [o] {
@@ -331,6 +331,11 @@ CommandRunner add_fit_command(CLI::App& app) {
                 if (shared) said.push_back(warning);
                 std::fprintf(stderr, "fxview fit: warning: %s%s\n", all && !shared ? (each.model + ": ").c_str() : "", warning.c_str());
             }
+        if (!r.converged) {  // written and printed, but not an optimum: a script must not take it for one
+            std::fprintf(stderr, "fxview fit: %s did not converge (%s): the parameters are not an optimum (exit 1)\n", r.model.c_str(),
+                         r.stop_reason.c_str());
+            return 1;
+        }
         return 0;
     };
 }
@@ -349,7 +354,7 @@ CommandRunner add_brdf_grid_command(CLI::App& app) {
     CLI::App* command = app.add_subcommand("brdf-grid", "Tabulate an analytic BRDF on a goniometer grid (synthetic data for fit)");
     command->add_option("--model", o->model, kGridModels)->capture_default_str();
     command->add_option("--param", o->params, "KEY=VALUE, colours as r,g,b (e.g. --param cs=0.5,0.4,0.3 --param ns=80)");
-    command->add_option("--noise", o->noise, "Relative Gaussian noise on every value (e.g. 0.02)")->check(CLI::Range(0.0, 1.0));
+    command->add_option("--noise", o->noise, "Relative Gaussian noise on every value (e.g. 0.02)")->check(finite_range(0.0, 1.0));
     command->add_option("--seed", o->seed, "Noise seed (the same seed gives the same file)")->capture_default_str();
     command->add_option("--merl", o->merl, "Sample a MERL .binary file instead of a model");
     command->add_option("--samples", o->samples, "Samples of theta_in, theta_out (0..90) and phi_out (0..180); default: the original fitter's measurement grid")

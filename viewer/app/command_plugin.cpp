@@ -109,7 +109,7 @@ CommandRunner add_plugin_command(CLI::App& app) {
             if (!o->preview.empty() && result.preview) std::printf("preview %s: %s\n", o->preview.c_str(), result.preview_caption.c_str());
         }
         for (const auto& warning : result.warnings) std::fprintf(stderr, "fxview plugin: warning: %s\n", warning.c_str());
-        for (const auto& name : missing) std::fprintf(stderr, "fxview plugin: warning: %s not written (the effect has no such parameter)\n", name.c_str());
+        for (const auto& reason : missing) std::fprintf(stderr, "fxview plugin: warning: not written: %s\n", reason.c_str());
         return 0;
     };
 }

@@ -8,6 +8,7 @@
 #include "app/commands.hpp"
 #include "app/film_error.hpp"
 #include "app/spectrum_plot.hpp"
+#include "app/value_parsing.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
 #include "image/image_file.hpp"
@@ -158,7 +159,7 @@ CommandRunner add_spectra_command(CLI::App& app) {
     CLI::App* lod = spectra->add_subcommand("lod", "Colour error of each level of detail (support points every 2^(9-level) nm)");
     lod->add_option("spectrum", o->names, "Object reflectance: library name, file or source (omit with --film)")->expected(0, 1);
     lod->add_option("--light", o->light, "Light spectrum")->capture_default_str();
-    lod->add_option("--film", o->film_nm, "Object = a soap film (n = 1.33, in air, normal incidence) this thick, in nm")->check(CLI::Range(0.0, 10000.0));
+    lod->add_option("--film", o->film_nm, "Object = a soap film (n = 1.33, in air, normal incidence) this thick, in nm")->check(finite_range(0.0, 10000.0));
     lod->add_option("--observer", o->observer, "1931 (2 degree) or 1964 (10 degree)")->capture_default_str();
     lod->add_option("--lower", o->lower, "Lowest wavelength (nm)")->capture_default_str();
     lod->add_option("--upper", o->upper, "Highest wavelength (nm)")->capture_default_str();

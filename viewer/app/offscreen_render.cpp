@@ -8,6 +8,7 @@
 #include "gl/render_target.hpp"
 #include "render/debug_renderer.hpp"
 #include "render/effect_session.hpp"
+#include "render/environment_maps.hpp"
 #include "render/skybox.hpp"
 
 namespace fxview::app {
@@ -21,20 +22,24 @@ image::FloatImage render_offscreen(const RenderRequest& request) {
     const auto context = context::create_context(context_options);
 
     gl::RenderTarget target({request.width, request.height, 1, request.samples});
+    const auto draw_environment = [&](const render::EnvironmentMaps& environment) {  // behind the objects
+        render::Skybox().draw(environment.texture("environment:specular")->texture.get(), request.scene.camera, target,
+                              {request.scene.environment.world_to_environment(), request.scene.environment.intensity, true});
+        target.resolve();
+    };
     if (request.effect.path.empty()) {
         render::DebugRenderer renderer;
         renderer.render(request.scene, request.view, target);
+        // Without an effect the environment is only the background, but it is loaded and shown all the
+        // same: a missing file is an error, never silently ignored.
+        if (!request.scene.environment.source.empty())
+            draw_environment(render::EnvironmentMaps(request.scene.environment.source, resource_limits(request.effect.access)));
     } else {
         const auto session = open_effect_session(request.effect);
         if (!request.effect.save_preset.empty())
             effect::save_preset(request.effect.save_preset, session->effect(), session->technique(), session->values());
         session->render(request.scene, target);
-        if (!request.scene.environment.source.empty()) {  // the environment behind the objects
-            const render::EnvironmentMaps& environment = session->environment(request.scene.environment);
-            render::Skybox().draw(environment.texture("environment:specular")->texture.get(), request.scene.camera, target,
-                                  {request.scene.environment.world_to_environment(), request.scene.environment.intensity, true});
-            target.resolve();
-        }
+        if (!request.scene.environment.source.empty()) draw_environment(session->environment(request.scene.environment));
     }
     image::FloatImage image = target.read_color(0);
 

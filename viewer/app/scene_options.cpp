@@ -1,6 +1,7 @@
 #include "app/scene_options.hpp"
 
 #include <cmath>
+#include <filesystem>
 
 #include "app/value_parsing.hpp"
 #include "core/error.hpp"
@@ -18,11 +19,11 @@ void add_scene_options(CLI::App& command, SceneOptions& o) {
     command.add_option("--samples", o.samples_given, "MSAA samples (0 = off; default: the preset's, else 0)")->check(CLI::Range(0, 32));
     command.add_option("--debug-view", o.debug_view, "Debug shader: normals, uv, camera or light")->capture_default_str();
     command.add_option("--camera-distance", o.camera_distance, "Camera Z translation (zoom)")
-        ->check(CLI::Range(0.01f, 1000.0f))
+        ->check(finite_range(0.01, 1000.0))
         ->capture_default_str();
     command.add_option("--camera-rotate", o.camera_rotate, "Camera rotation X,Y,Z in degrees (orbits the target)");
     command.add_option("--camera-pan", o.camera_pan, "Camera target X,Y");
-    command.add_option("--fov", o.fov, "Vertical field of view in degrees")->check(CLI::Range(1.0f, 179.0f));
+    command.add_option("--fov", o.fov, "Vertical field of view in degrees")->check(finite_range(1.0, 179.0));
     command.add_option("--light-position", o.light_position, "Light position X,Y,Z")->capture_default_str();
     command.add_option("--light-rotate", o.light_rotate, "Light rotation about the origin X,Y,Z in degrees");
     command.add_option("--object-position", o.object_position, "Object position X,Y,Z");
@@ -33,8 +34,8 @@ void add_scene_options(CLI::App& command, SceneOptions& o) {
                        "Environment that lights image-based-lighting effects and fills the background: studio, sky[:ELEV[,CCT]], "
                        "furnace, none, an equirectangular .hdr/.exr, a cube cross, a cube .dds, or six face files F1,...,F6 (+X -X +Y -Y +Z -Z)");
     command.add_option("--environment-rotate", o.environment_rotate, "Environment rotation about the vertical axis, degrees");
-    command.add_option("--environment-intensity", o.environment_intensity, "Environment radiance scale")->check(CLI::Range(0.0f, 1e6f));
-    command.add_option("--exposure", o.exposure, "Exposure in EV stops for PNG output (factor 2^EV)")->check(CLI::Range(-30.0f, 30.0f));
+    command.add_option("--environment-intensity", o.environment_intensity, "Environment radiance scale")->check(finite_range(0.0, 1e6));
+    command.add_option("--exposure", o.exposure, "Exposure in EV stops for PNG output (factor 2^EV)")->check(finite_range(-30.0, 30.0));
     command.add_option("--tone-map", o.tone_map, "Tone mapper for PNG output: none, aces or pbr-neutral");
     command.add_flag("--gl-debug", o.gl_debug, "Print KHR_debug messages of the driver");
     add_effect_options(command, o.effect);
@@ -49,7 +50,14 @@ RenderRequest to_render_request(const SceneOptions& o) {
     request.height = size.y;
     // The preset's scene settings, where the command line gives none.
     effect::PresetScene preset;
-    if (!o.effect.preset.empty()) preset = effect::load_preset_scene(o.effect.preset);
+    if (!o.effect.preset.empty()) {
+        // The preset may read what its effect may: the search roots, --allow-path, the effect's folder.
+        effect::LoadOptions load = effect_load_options(o.effect.access);
+        if (!o.effect.path.empty())
+            load.access.allow_folder(std::filesystem::path(o.effect.path).parent_path().empty() ? std::filesystem::path(".")
+                                                                                                  : std::filesystem::path(o.effect.path).parent_path());
+        preset = effect::load_preset_scene(o.effect.preset, load.limits, load.access);
+    }
     request.samples = o.samples_given.value_or(preset.samples.value_or(o.samples));
 #ifndef NDEBUG
     request.gl_debug = true;  // debug builds always check GL errors
@@ -81,7 +89,15 @@ RenderRequest to_render_request(const SceneOptions& o) {
     if (scene.environment.intensity < 0.0f) throw UsageError("--environment-intensity: must be at least 0");
     request.display.exposure_ev = finite("--exposure", o.exposure.value_or(preset.exposure.value_or(0.0f)));
     if (std::abs(request.display.exposure_ev) > 30.0f) throw UsageError("--exposure: -30 to 30 EV");
-    request.display.tone_map = image::parse_tone_map(o.tone_map.value_or(preset.tone_map.value_or("none")));
+    if (o.tone_map) request.display.tone_map = image::parse_tone_map(*o.tone_map);
+    else if (preset.tone_map) {
+        try {  // a bad name in the preset is the preset's error, at its line
+            request.display.tone_map = image::parse_tone_map(*preset.tone_map);
+        } catch (const UsageError& error) {
+            throw Error(preset.where("tone_map") + error.what());
+        }
+    }
+    if (scene.environment.source.size() > kMaxEnvironmentSourceChars) throw UsageError("--environment: longer than any list of six file names");
     request.effect = o.effect;
     return request;
 }

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 #include "core/error.hpp"
 
@@ -87,6 +88,21 @@ glm::ivec2 parse_size(const std::string& option, const std::string& text) {
 
 glm::ivec2 parse_pixel(const std::string& option, const std::string& text) {
     return parse_int_pair(option, text, ',', 0, 16383, "X,Y such as 32,32");
+}
+
+CLI::Validator finite_range(double low, double high) {
+    return CLI::Validator(
+        [low, high](std::string& input) -> std::string {
+            double value = 0;
+            const auto [end, error] = std::from_chars(input.data(), input.data() + input.size(), value);
+            if (error != std::errc() || end != input.data() + input.size() || !std::isfinite(value) || value < low || value > high) {
+                char text[96];
+                std::snprintf(text, sizeof text, "a finite number in [%g, %g] is expected", low, high);
+                return text;
+            }
+            return {};
+        },
+        "FLOAT in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
 }
 
 }  // namespace fxview::app

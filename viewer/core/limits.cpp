@@ -52,9 +52,14 @@ void check_limit(const ResourceLimits& limits, const char* name, std::int64_t va
                     std::to_string(limit) + " (raise it with --limit " + info.name + "=N)");
 }
 
+std::string not_a_file(const std::string& path) {
+    std::error_code error;
+    return std::filesystem::exists(path, error) ? "not a regular file (a device, a pipe or a folder)" : "no such file";
+}
+
 std::int64_t checked_file_size(const std::string& path, const ResourceLimits& limits) {
     std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error)) throw Error(path + ": no such file");
+    if (!std::filesystem::is_regular_file(path, error)) throw Error(path + ": " + not_a_file(path));
     const auto size = static_cast<std::int64_t>(std::filesystem::file_size(path, error));
     if (error) throw Error(path + ": cannot read its size");
     check_limit(limits, "data-file-bytes", size, path, "file size");

@@ -3,6 +3,7 @@
 // before anything is allocated. Defaults are documented in docs/effect-format.md ("Budgets");
 // `--limit NAME=VALUE` changes one.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -27,6 +28,10 @@ struct ResourceLimits {
     std::int64_t include_depth = 32;                // nested #include levels
 };
 
+// The longest environment source (a name, or six face paths of PATH_MAX): longer text is refused
+// before anything splits or stats it.
+inline constexpr size_t kMaxEnvironmentSourceChars = 6 * 4096 + 5;
+
 // One budget, as the user names it: "texture-bytes", "include-depth", ...
 struct LimitInfo {
     const char* name;
@@ -43,6 +48,10 @@ void set_limit(ResourceLimits& limits, const std::string& assignment);
 // `value` is above the limit named `name`.
 void check_limit(const ResourceLimits& limits, const char* name, std::int64_t value, const std::string& where,
                  const std::string& what);
+
+// Why `path` cannot be read as a file: "no such file", or "not a regular file (a device, a pipe or
+// a folder)" for /dev/zero and the like, which exist but are no files.
+std::string not_a_file(const std::string& path);
 
 // The size of a file, checked against data-file-bytes before it is read.
 std::int64_t checked_file_size(const std::string& path, const ResourceLimits& limits);

@@ -4,7 +4,6 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <regex>
 #include <sstream>
 
 #include "core/text.hpp"
@@ -81,6 +80,26 @@ std::string parameter_line(const std::vector<std::string>& w, const SourceLocati
     throw EffectError(where, "unknown parameter type '" + excerpt(type) + "' (float, color or bool)");
 }
 
+bool is_identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// Whether `line` holds `vec3 BRDF(` after a non-identifier character (a definition, not only a
+// call). A plain scan, linear in the line: std::regex recursed per character and overflowed the
+// stack on long lines.
+bool defines_brdf_function(const std::string& line) {
+    const auto blank = [&](size_t at) { return at < line.size() && std::isspace(static_cast<unsigned char>(line[at])); };
+    for (size_t at = line.find("vec3"); at != std::string::npos; at = line.find("vec3", at + 1)) {
+        if (at > 0 && is_identifier_char(line[at - 1])) continue;
+        size_t next = at + 4;
+        if (!blank(next)) continue;
+        while (blank(next)) ++next;
+        if (line.compare(next, 4, "BRDF") != 0) continue;
+        next += 4;
+        while (blank(next)) ++next;
+        if (next < line.size() && line[next] == '(') return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 bool is_brdf_file(const std::string& path) {
@@ -109,9 +128,7 @@ TranslatedLines translate_brdf_file(const std::string& path, const std::vector<s
                 block = Block::None;
                 emit("", number);
             } else {
-                // A definition (not only a call) of BRDF: the name followed by '(' after a type.
-                static const std::regex definition(R"((^|[^A-Za-z0-9_])vec3\s+BRDF\s*\()");
-                defines_brdf = defines_brdf || std::regex_search(lines[i], definition);
+                defines_brdf = defines_brdf || defines_brdf_function(lines[i]);
                 emit(lines[i], number);  // GLSL as written
             }
             continue;

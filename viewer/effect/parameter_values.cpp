@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 #include "effect/parser.hpp"
 
@@ -22,11 +23,82 @@ ParameterValues default_values(const Effect& effect) {
 
 namespace {
 
+bool is_integral_type(const std::string& type) {
+    return type == "int" || type == "bool" || type == "uint" || type.rfind("ivec", 0) == 0 || type.rfind("bvec", 0) == 0 ||
+           type.rfind("uvec", 0) == 0;
+}
+bool is_boolean_type(const std::string& type) { return type == "bool" || type.rfind("bvec", 0) == 0; }
+bool is_unsigned_type(const std::string& type) { return type == "uint" || type.rfind("uvec", 0) == 0; }
+
+std::string number_text(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", v);
+    return text;
+}
+
+const Annotation* find_annotation(const Parameter& p, const char* name) {
+    for (const auto& a : p.annotations)
+        if (to_lower(a.name) == name && !a.value.is_string && a.value.numbers.size() == 1) return &a;
+    return nullptr;
+}
+
 double srgb_to_linear(double encoded) {
     return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
 }
 
 }  // namespace
+
+std::pair<std::optional<double>, std::optional<double>> hard_range(const Parameter& p) {
+    const Annotation* low = find_annotation(p, "hardmin");
+    const Annotation* high = find_annotation(p, "hardmax");
+    if (low || high)
+        return {low ? std::optional<double>(low->value.numbers[0]) : std::nullopt, high ? std::optional<double>(high->value.numbers[0]) : std::nullopt};
+    return {p.ui.min, p.ui.max};
+}
+
+std::string value_problem(const Parameter& p, const std::vector<double>& value) {
+    const size_t needed = static_cast<size_t>(component_count(p.type) * std::max(1, p.array_size));
+    if (value.size() != needed)
+        return p.type + " " + p.name + " takes " + std::to_string(needed) + " value(s), got " + std::to_string(value.size());
+    const bool integral = is_integral_type(p.type), boolean = is_boolean_type(p.type);
+    // A combo's list, unless it is a generated list that was not resolved here ("spectral:library").
+    const bool indexed = integral && !boolean && component_count(p.type) == 1 && !p.ui.items.empty() &&
+                         !(p.ui.items.size() == 1 && p.ui.items[0].find(':') != std::string::npos);
+    const auto [low, high] = hard_range(p);
+    const bool ranged = component_count(p.type) <= 4;  // matrices have no UI range
+    for (const double v : value) {
+        if (!std::isfinite(v)) return p.name + " must be a finite number";
+        if (integral) {
+            const double lowest = boolean || is_unsigned_type(p.type) ? 0.0 : -2147483648.0;
+            const double highest = boolean ? 1.0 : is_unsigned_type(p.type) ? 4294967295.0 : 2147483647.0;
+            if (v != std::floor(v) || v < lowest || v > highest)
+                return p.type + " " + p.name + " takes " + (boolean ? "true, false, 0 or 1" : "whole numbers of a 32-bit int") + ", not " + number_text(v);
+        }
+        if (indexed && (v < 0 || v >= static_cast<double>(p.ui.items.size())))
+            return p.name + " = " + number_text(v) + " is not an entry of its list (0.." + std::to_string(p.ui.items.size() - 1) + ": " +
+                   excerpt(p.ui.items.front()) + ", ...)";
+        if (ranged && ((low && v < *low) || (high && v > *high)))
+            return p.name + " = " + number_text(v) + " lies outside its range " + (low ? number_text(*low) : "-inf") + ".." +
+                   (high ? number_text(*high) : "inf");
+        if (!integral && std::abs(v) > 3.4028234663852886e38) return p.name + " = " + number_text(v) + " does not fit a float";
+    }
+    return {};
+}
+
+void check_defaults(Effect& effect) {
+    for (auto& p : effect.parameters) {
+        const auto [low, high] = hard_range(p);
+        if (low && high && *low > *high) throw EffectError(p.where, p.name + ": HardMin " + number_text(*low) + " exceeds HardMax " + number_text(*high));
+        if (!p.semantic.empty() || is_sampler_type(p.type) || !p.default_value || p.default_value->is_string) continue;
+        const std::vector<double>& value = p.default_value->numbers;
+        if (effect.legacy && component_count(p.type) <= 4)
+            for (const double v : value) {
+                if (p.ui.min && v < *p.ui.min) p.ui.min = v;
+                if (p.ui.max && v > *p.ui.max) p.ui.max = v;
+            }
+        if (const std::string problem = value_problem(p, value); !problem.empty()) throw EffectError(p.where, "default: " + problem);
+    }
+}
 
 void set_value_from_text(const Effect& effect, ParameterValues& values, const std::string& assignment) {
     const size_t equals = assignment.find('=');
@@ -73,17 +145,10 @@ void set_value_from_text(const Effect& effect, ParameterValues& values, const st
             parsed.push_back(value);
         }
     }
-    // int, ivec and bool parameters take whole numbers a 32-bit int holds (bool: 0 or 1).
-    const bool integral = parameter->type == "int" || parameter->type == "bool" || parameter->type.rfind("ivec", 0) == 0 ||
-                          parameter->type.rfind("bvec", 0) == 0;
-    const bool boolean = parameter->type == "bool" || parameter->type.rfind("bvec", 0) == 0;
-    for (double v : parsed)
-        if (integral && (v != std::floor(v) || v < (boolean ? 0.0 : -2147483648.0) || v > (boolean ? 1.0 : 2147483647.0)))
-            throw UsageError("--set " + name + ": " + parameter->type + " takes " + (boolean ? "true, false, 0 or 1" : "whole numbers of a 32-bit int") +
-                             ", not " + excerpt(text));
     if (parsed.size() != target.size())
         throw UsageError("--set " + name + ": " + parameter->type + " needs " + std::to_string(target.size()) +
                          " value(s), got " + std::to_string(parsed.size()));
+    if (const std::string problem = value_problem(*parameter, parsed); !problem.empty()) throw UsageError("--set " + name + ": " + problem);
     target = parsed;
 }
 

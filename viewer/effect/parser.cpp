@@ -12,6 +12,7 @@
 #include <unordered_set>
 
 #include "effect/lexer.hpp"
+#include "effect/parameter_values.hpp"
 #include "effect/semantics.hpp"
 #include "effect/texture_annotations.hpp"
 #include "legacy/legacy_effect.hpp"
@@ -591,6 +592,7 @@ Effect load_effect(const std::string& path, const LoadOptions& options) {
         if (parameter.ui.items.size() == 1)
             if (const auto list = options.item_lists.find(parameter.ui.items[0]); list != options.item_lists.end())
                 parameter.ui.items = list->second;
+    check_defaults(effect);
     return effect;
 }
 

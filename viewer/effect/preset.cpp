@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -52,30 +53,83 @@ std::string line_of(const std::string& path, const std::string& text, const std:
 
 }  // namespace
 
-PresetScene load_preset_scene(const std::string& path, const ResourceLimits& limits) {
+namespace {
+
+bool is_builtin_environment(const std::string& name) {
+    return name == "studio" || name == "furnace" || name == "none" || name == "sky" || name.rfind("sky:", 0) == 0;
+}
+
+// A preset's environment files, resolved from the preset's folder and checked against `access`
+// like an effect's textures: a preset travels with effects and may read no more than they may.
+std::string preset_environment(const std::string& value, const std::string& where, const std::filesystem::path& folder,
+                               const FileAccessPolicy& access) {
+    if (value.size() > kMaxEnvironmentSourceChars)
+        throw Error(where + "scene \"environment\" is " + std::to_string(value.size()) + " characters long (at most " +
+                    std::to_string(kMaxEnvironmentSourceChars) + ")");
+    if (is_builtin_environment(value)) return value;
+    std::string resolved;
+    size_t start = 0;
+    for (size_t i = 0; i <= value.size(); ++i) {
+        if (i < value.size() && value[i] != ',') continue;
+        const std::filesystem::path file = value.substr(start, i - start);
+        start = i + 1;
+        if (file.empty()) throw Error(where + "scene \"environment\" names an empty file");
+        const std::filesystem::path path = file.is_absolute() ? file : folder / file;
+        try {
+            access.require(path, "environment");
+        } catch (const Error& refused) {
+            throw Error(where + refused.what());
+        }
+        resolved += (resolved.empty() ? "" : ",") + path.string();
+    }
+    return resolved;
+}
+
+}  // namespace
+
+std::string PresetScene::where(const std::string& key) const {
+    const auto line = lines.find(key);
+    return path + ":" + std::to_string(line == lines.end() ? 1 : line->second) + ": ";
+}
+
+PresetScene load_preset_scene(const std::string& path, const ResourceLimits& limits, FileAccessPolicy access) {
     std::string text;
     const nlohmann::json json = read_preset_json(path, limits, text);
     PresetScene scene;
+    scene.path = path;
     if (!json.is_object() || !json.contains("scene")) return scene;
     const nlohmann::json& s = json["scene"];
     if (!s.is_object()) throw Error(line_of(path, text, "scene") + "\"scene\" must be an object");
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path().empty() ? "." : std::filesystem::path(path).parent_path();
+    access.allow_folder(folder);
     for (const auto& [key, value] : s.items()) {
         const std::string name = key;  // a structured binding cannot be captured before C++20's clang 16
-        const auto bad = [&](const char* what) { return Error(line_of(path, text, name) + "scene \"" + name + "\" must be " + what); };
+        const std::string where = line_of(path, text, name);
+        scene.lines[name] = std::stoi(where.substr(path.size() + 1));
+        const auto bad = [&](const char* what) { return Error(where + "scene \"" + name + "\" must be " + what); };
+        // Numbers as doubles first: a float or int conversion of 1e300 or 4294967300 would not fail.
+        const auto number = [&](double low, double high, const char* what) {
+            if (!value.is_number() || !(value.get<double>() >= low && value.get<double>() <= high)) throw bad(what);
+            return value.get<double>();
+        };
         if (key == "environment") {
             if (!value.is_string()) throw bad("a string");
-            scene.environment = value.get<std::string>();
-        } else if (key == "environment_rotate" || key == "environment_intensity" || key == "exposure") {
-            if (!value.is_number()) throw bad("a number");
-            (key == "environment_rotate" ? scene.environment_rotate : key == "exposure" ? scene.exposure : scene.environment_intensity) = value.get<float>();
+            scene.environment = preset_environment(value.get<std::string>(), where, folder, access);
+        } else if (key == "environment_rotate") {
+            scene.environment_rotate = static_cast<float>(number(-3600, 3600, "a number of degrees, -3600 to 3600"));
+        } else if (key == "environment_intensity") {
+            scene.environment_intensity = static_cast<float>(number(0, 1e6, "a number 0 to 1e6"));
+        } else if (key == "exposure") {
+            scene.exposure = static_cast<float>(number(-30, 30, "a number of EV stops, -30 to 30"));
         } else if (key == "tone_map") {
             if (!value.is_string()) throw bad("a string");
             scene.tone_map = value.get<std::string>();
         } else if (key == "samples") {
-            if (!value.is_number_integer() || value.get<int>() < 0 || value.get<int>() > 32) throw bad("an integer 0-32");
-            scene.samples = value.get<int>();
+            const double samples = number(0, 32, "an integer 0-32");
+            if (!value.is_number_integer()) throw bad("an integer 0-32");
+            scene.samples = static_cast<int>(samples);
         } else {
-            throw Error(line_of(path, text, key) + "unknown scene setting \"" + key +
+            throw Error(where + "unknown scene setting \"" + excerpt(key) +
                         "\" (environment, environment_rotate, environment_intensity, exposure, tone_map, samples)");
         }
     }
@@ -89,6 +143,9 @@ Preset load_preset(const std::string& path, const Effect& effect, ParameterValue
     const auto where = [&](const std::string& key) { return line_of(path, text, key); };
     if (!json.is_object() || !json.contains("parameters") || !json["parameters"].is_object())
         throw Error(where("parameters") + "a preset needs a \"parameters\" object");
+    for (const auto& [key, value] : json.items())  // docs/preset.schema.json: no other keys
+        if (key != "effect" && key != "technique" && key != "parameters" && key != "scene")
+            throw Error(where(key) + "unknown preset key \"" + excerpt(key) + "\" (effect, technique, parameters, scene)");
     if (json.contains("effect") && !json["effect"].is_string()) throw Error(where("effect") + "\"effect\" must be a string");
     if (json.contains("technique") && !json["technique"].is_string()) throw Error(where("technique") + "\"technique\" must be a string");
     Preset preset;
@@ -112,12 +169,11 @@ Preset load_preset(const std::string& path, const Effect& effect, ParameterValue
                 numbers.push_back(item.get<double>());
             }
         else throw Error(where(name) + "preset value of " + name + " must be a number or a list of numbers");
-        for (double number : numbers)
-            if (!std::isfinite(number)) throw Error(where(name) + "preset value of " + name + " is not a finite number");
         auto& target = updated.numbers[name];
         if (numbers.size() != target.size())
             throw Error(where(name) + "preset gives " + std::to_string(numbers.size()) + " value(s) for " + parameter->type + " " +
                         name + ", which takes " + std::to_string(target.size()));
+        if (const std::string problem = value_problem(*parameter, numbers); !problem.empty()) throw Error(where(name) + "preset value: " + problem);
         target = numbers;
     }
     try {

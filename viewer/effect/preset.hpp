@@ -2,9 +2,11 @@
 // JSON file, {"effect": "...", "technique": "...", "parameters": {"Name": 0.5, "Color": [1,0,0],
 // "Sampler": "file.png"}}.
 #pragma once
+#include <map>
 #include <optional>
 #include <string>
 
+#include "core/file_access.hpp"
 #include "core/limits.hpp"
 
 #include "effect/parameter_values.hpp"
@@ -21,13 +23,18 @@ void save_preset(const std::string& path, const Effect& effect, const std::strin
 // The scene and display settings a preset may carry besides its values, {"scene": {"environment":
 // "studio", "environment_rotate": 0, "environment_intensity": 1, "exposure": 0, "tone_map":
 // "pbr-neutral", "samples": 4}}: what the CLI and the viewer use unless told otherwise. Error naming
-// file and line for a wrong type or an unknown key.
+// file and line for a wrong type, a value out of range or an unknown key. Environment files resolve
+// from the preset's folder and must be readable under `access` (the effect's policy; the preset's
+// folder is added), as an effect's textures.
 struct PresetScene {
     std::optional<std::string> environment, tone_map;
     std::optional<float> environment_rotate, environment_intensity, exposure;
     std::optional<int> samples;
+    std::string path;
+    std::map<std::string, int> lines;  // the line of each key, for messages about its value
+    std::string where(const std::string& key) const;  // "PATH:LINE: "
 };
-PresetScene load_preset_scene(const std::string& path, const ResourceLimits& limits = {});
+PresetScene load_preset_scene(const std::string& path, const ResourceLimits& limits = {}, FileAccessPolicy access = {});
 
 // Reads a preset and applies it over `values`; throws Error naming the file for bad JSON, an
 // unknown parameter or a value of the wrong size.

@@ -28,6 +28,15 @@ const char* stage_name(ShaderStage stage) {
 
 namespace {
 
+const char* const kShaderSourceExtensions = ".glsl .glslh .glslinc .inc .vert .frag .geom .comp .tesc .tese .fx .fxh .cgfx .cg .cgh .cginc .hlsl .hlsli .h";
+
+bool is_shader_source_name(const std::string& path) {
+    const std::string extension = lower_extension(path);
+    if (extension.size() < 2) return false;
+    const std::string list = std::string(" ") + kShaderSourceExtensions + " ";
+    return list.find(" " + extension + " ") != std::string::npos;
+}
+
 // A plain scanner instead of std::regex: regex matching recurses per character and overflows the
 // stack on long lines (a line of 30 000 blanks was enough).
 size_t skip_blanks(std::string_view line, size_t i) {
@@ -171,6 +180,10 @@ void SourceMap::append_file(const std::string& path, const LoadContext& context,
             } catch (const Error& refused) {
                 throw EffectError(here, refused.what());
             }
+            // Only shader sources: the compiler quotes the text it reads in its messages, so an include
+            // of a key file or a .env below the effect's folder would print its contents.
+            if (!is_shader_source_name(found))
+                throw EffectError(here, "included file '" + excerpt(*name, 200) + "' is not a shader source (" + kShaderSourceExtensions + ")");
             append_file(found, context, stack, &here);
             // Keep one line for the #include itself so that every line of the file has an origin.
             line.clear();

@@ -305,7 +305,12 @@ Observations observations(const BrdfGrid& grid, double limit_deg) {
                     ++data.outside_limit;
                     continue;
                 }
-                data.samples.push_back({l, grid.camera(o, p), weight * l.z / sum, grid.values[grid.index(i, o, p)]});
+                const std::array<double, 3>& value = grid.values[grid.index(i, o, p)];
+                if (value[0] < 0 || value[1] < 0 || value[2] < 0) {  // as in MERL files: not a measurement, left out and counted
+                    ++data.masked;
+                    continue;
+                }
+                data.samples.push_back({l, grid.camera(o, p), weight * l.z / sum, value});
             }
     }
     return data;

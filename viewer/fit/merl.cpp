@@ -64,8 +64,9 @@ MerlBrdf read_merl(const std::string& path, const ResourceLimits& limits) {
     in.read(reinterpret_cast<char*>(dims), sizeof dims);
     // Each dimension is checked on its own first: their product of three int32 overflows even int64.
     if (!in || dims[0] != kMerlThetaH || dims[1] != kMerlThetaD || dims[2] != kMerlPhiD)
-        throw Error(path + ": not a MERL BRDF (dimensions " + std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " +
-                    std::to_string(dims[2]) + ", expected 90 x 90 x 180)");
+        // The header's bytes are not quoted: any file's first bytes (environment text of
+        // /proc/self/environ, a key file) would reach the message as integers.
+        throw Error(path + ": not a MERL BRDF (its header does not give the dimensions 90 x 90 x 180)");
     MerlBrdf merl;
     merl.data.resize(3 * kCount);
     in.read(reinterpret_cast<char*>(merl.data.data()), static_cast<std::streamsize>(merl.data.size() * sizeof(double)));

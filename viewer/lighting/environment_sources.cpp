@@ -131,13 +131,26 @@ std::vector<std::string> split(const std::string& text, char separator) {
     return parts;
 }
 
-FloatCube from_files(const std::string& source, int size) {
+// The float radiance `data` becomes, added to what earlier files of the environment hold, checked
+// against texture-bytes before it is converted (six 8-bit faces that each fit grow fourfold).
+void check_float_budget(const texture::TextureData& data, std::int64_t& used, const ResourceLimits& limits, const std::string& file) {
+    std::int64_t texels = 0;
+    for (const auto& face : data.faces)
+        if (!face.empty()) texels += static_cast<std::int64_t>(face[0].width) * face[0].height;
+    used += texels * 16;
+    check_limit(limits, "texture-bytes", used, file, "the environment's float radiance");
+}
+
+FloatCube from_files(const std::string& source, int size, const ResourceLimits& limits) {
     const std::vector<std::string> files = split(source, ',');
+    std::int64_t used = 0;
     if (files.size() == 6) {
         texture::TextureData cube;
         cube.type = texture::TextureType::Cube;
         for (const auto& file : files) {
-            texture::TextureData face = texture::convert(texture::load_texture_file(file), texture::PixelFormat::RGBA32F);
+            const texture::TextureData loaded = texture::load_texture_file(file, limits);
+            check_float_budget(loaded, used, limits, file);
+            texture::TextureData face = texture::convert(loaded, texture::PixelFormat::RGBA32F);
             if (face.width() != face.height() || (!cube.faces.empty() && face.width() != cube.width()))
                 throw Error(file + ": the six faces of an environment must be equal squares");
             cube.faces.push_back(std::move(face.faces[0]));
@@ -146,7 +159,8 @@ FloatCube from_files(const std::string& source, int size) {
         return from_cube(cube, size);
     }
     if (files.size() != 1) throw Error("environment '" + source + "': one file, or six face files separated by commas");
-    texture::TextureData data = texture::load_texture_file(source);
+    texture::TextureData data = texture::load_texture_file(source, limits);
+    check_float_budget(data, used, limits, source);
     if (data.type == texture::TextureType::Cube) return from_cube(texture::convert(data, texture::PixelFormat::RGBA32F), size);
     if (data.width() == 2 * data.height()) return from_equirectangular(data, size);
     if (data.width() * 3 == data.height() * 4 || data.width() * 4 == data.height() * 3)
@@ -220,7 +234,9 @@ Sky parse_sky(const std::string& source) {
     return sky;
 }
 
-Environment make_environment(const std::string& source, int size) {
+Environment make_environment(const std::string& source, int size, const ResourceLimits& limits) {
+    if (source.size() > kMaxEnvironmentSourceChars)
+        throw UsageError("environment: " + std::to_string(source.size()) + " characters, longer than any list of six file names");
     if (source == "studio") return {tabulate(size, 2, studio_radiance), {}};
     if (source == "furnace") return {tabulate(size, 1, [](const glm::dvec3&) { return glm::vec3(1.0f); }), {}};
     if (source == "sky" || source.rfind("sky:", 0) == 0) return make_sky(parse_sky(source), size);
@@ -228,7 +244,7 @@ Environment make_environment(const std::string& source, int size) {
     std::error_code error;
     if (source.find_first_of("/.,") == std::string::npos && !std::filesystem::exists(source, error))
         throw UsageError("unknown environment '" + source + "' (studio, sky, sky:ELEVATION[,CCT], furnace, none, or an image file)");
-    Environment environment{from_files(source, size), {}};
+    Environment environment{from_files(source, size, limits), {}};
     for (const auto& face : environment.radiance.faces)
         for (const glm::vec3& texel : face)
             if (!std::isfinite(texel.r) || !std::isfinite(texel.g) || !std::isfinite(texel.b) || texel.r < 0 || texel.g < 0 || texel.b < 0)

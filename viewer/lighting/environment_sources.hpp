@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/limits.hpp"
 #include "lighting/cube_map.hpp"
 
 namespace fxview::lighting {
@@ -36,7 +37,9 @@ struct Environment {
     FloatCube radiance_with_discs() const;
 };
 
-Environment make_environment(const std::string& source, int size);
+// Image files are read within `limits`: each file within texture-bytes, and all of them, as the
+// float radiance they become, within texture-bytes too (checked before each conversion).
+Environment make_environment(const std::string& source, int size, const ResourceLimits& limits = {});
 
 // The procedural ones, for tests and the documentation.
 glm::vec3 studio_radiance(const glm::dvec3& direction);

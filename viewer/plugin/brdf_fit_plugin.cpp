@@ -1,5 +1,7 @@
 #include "plugin/brdf_fit_plugin.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -63,6 +65,9 @@ public:
         if (d.text("Targets").empty())
             for (const auto& w : wanted) targets.push_back(w.uniform);
         if (targets.size() != wanted.size()) fail("Targets must name " + std::to_string(wanted.size()) + " parameters: " + expected);
+        for (size_t i = 0; i < targets.size(); ++i)
+            if (std::find(targets.begin(), targets.begin() + static_cast<std::ptrdiff_t>(i), targets[i]) != targets.begin() + static_cast<std::ptrdiff_t>(i))
+                fail("Targets names " + targets[i] + " twice: each model parameter needs a parameter of its own");
         for (size_t i = 0; i < wanted.size(); ++i) {
             const char* type = wanted[i].colour ? "vec3" : "float";
             const effect::Parameter* p = effect.find_parameter(targets[i]);

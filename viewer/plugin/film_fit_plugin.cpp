@@ -86,6 +86,8 @@ public:
             fail("Vary: " + vary_ + " needs UIMin >= 0 and UIMax > UIMin, the thickness range searched");
         low_ = *vary->ui.min;
         high_ = *vary->ui.max;
+        // The scan samples every 0.5 nm: its cost (and the int count of samples) is bounded here.
+        if (high_ - low_ > 20000.0) fail("Vary: " + vary_ + "'s range UIMin..UIMax spans more than 20 000 nm, the scan's budget");
         outer_ = parameter("OuterIndex", "float", true);
         film_ = parameter("FilmIndex", "float", true);
         substrate_ = parameter("SubstrateIndex", "float", true);

@@ -84,7 +84,8 @@ std::vector<std::unique_ptr<Plugin>> create_all(const effect::Effect& effect, co
 std::vector<std::string> types();
 
 // Writes the result's parameters into `values` where the effect still has them with the same size
-// (after a reload the effect may have changed); returns the names it could not write.
+// (after a reload the effect may have changed) and the value passes the rule of every value
+// (effect::value_problem); returns, for each one it could not write, "NAME: why".
 std::vector<std::string> apply(const effect::Effect& effect, effect::ParameterValues& values, const Result& result);
 
 }  // namespace fxview::plugin

@@ -36,6 +36,8 @@ std::string resolve_texture_path(const std::string& file, const std::string& eff
         if (fs::is_regular_file(candidate, error)) return candidate.lexically_normal().string();
     std::string searched;
     for (const auto& candidate : candidates) searched += (searched.empty() ? "" : ", ") + candidate.parent_path().string();
+    for (const auto& candidate : candidates)  // there, but a device or a folder
+        if (fs::exists(candidate, error)) throw Error(excerpt(candidate.string(), 200) + ": " + not_a_file(candidate.string()) + " (a texture file was expected)");
     throw Error("texture file '" + excerpt(file, 200) + "' not found (searched " + excerpt(searched, 400) + ")");
 }
 
@@ -244,7 +246,8 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
             // `--set Sampler=file` replaces the file of the sampler's own texture.
             std::error_code error;
             if (override_file != values.textures.end()) {
-                if (!fs::is_regular_file(override_file->second, error)) throw Error(excerpt(override_file->second, 200) + ": no such texture file");
+                if (!fs::is_regular_file(override_file->second, error))
+                    throw Error(excerpt(override_file->second, 200) + ": " + not_a_file(override_file->second) + " (a texture file was expected)");
                 paths.push_back(override_file->second);
             } else if (!legacy_paths.empty()) {
                 paths = legacy_paths;

@@ -131,7 +131,7 @@ const EnvironmentMaps& EffectSession::environment(const scene::Environment& envi
     if (!environment_ || environment_->source() != environment.source) {
         loaded_->resources->set_environment(nullptr);
         environment_.reset();  // a failed source leaves none rather than a stale one
-        environment_ = std::make_unique<EnvironmentMaps>(environment.source);
+        environment_ = std::make_unique<EnvironmentMaps>(environment.source, loaded_->effect->limits);
     }
     return *environment_;
 }

@@ -43,7 +43,7 @@ bool EnvironmentMaps::is_resource_name(const std::string& name) {
     return name == "environment:specular" || name == "environment:irradiance" || name == "environment:dfg";
 }
 
-EnvironmentMaps::EnvironmentMaps(const std::string& source) : source_(source) {
+EnvironmentMaps::EnvironmentMaps(const std::string& source, const ResourceLimits& limits) : source_(source) {
     if (source.empty()) {
         environment_.radiance = lighting::FloatCube(1);
         prefiltered_.specular.assign(1, lighting::FloatCube(1));
@@ -51,7 +51,7 @@ EnvironmentMaps::EnvironmentMaps(const std::string& source) : source_(source) {
         dfg_.size = 1;
         dfg_.data.assign(1, glm::vec3(0.0f));
     } else {
-        environment_ = lighting::make_environment(source, kSize);
+        environment_ = lighting::make_environment(source, kSize, limits);
         prefiltered_ = lighting::prefilter(environment_, kLevels);
         dfg_ = lighting::make_dfg_table(kDfgSize);
     }

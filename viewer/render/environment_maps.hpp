@@ -22,7 +22,7 @@ public:
     static constexpr int kDfgSize = 64;
 
     // Throws fxview::Error naming the source when it cannot be made.
-    explicit EnvironmentMaps(const std::string& source);
+    explicit EnvironmentMaps(const std::string& source, const ResourceLimits& limits = {});
 
     const std::string& source() const { return source_; }
     bool empty() const { return source_.empty(); }

@@ -47,6 +47,7 @@ PackedTexture pack_spectra(const std::vector<NamedSpectrum>& spectra, PixelForma
     const int rows = (static_cast<int>(spectra.size()) + kSpectraPerRow - 1) / kSpectraPerRow;
     PackedTexture packed = make(kSpectraPerRow * kTexelsPerSpectrum, rows, format);
     packed.texture.source = "packed spectra";
+    packed.count = static_cast<int>(spectra.size());
     if (format == PixelFormat::RGBA8) {
         // Scaled by the largest value inside the CMF range 360-830 nm (1 for the normalised library);
         // the few samples beyond 830 nm that the packing also holds are clipped to it.
@@ -71,6 +72,8 @@ PackedTexture pack_spectra(const std::vector<NamedSpectrum>& spectra, PixelForma
 }
 
 double packed_value(const PackedTexture& packed, int index, int nm) {
+    if (index < 0 || index >= packed.count)
+        throw Error("spectrum index " + std::to_string(index) + " is not in the library (0.." + std::to_string(packed.count - 1) + ")");
     const int i = nm - kPackedFirstNm;
     if (i < 0 || i >= kPackedSamples) return 0.0;
     const int rows = packed.texture.height();

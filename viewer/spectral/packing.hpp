@@ -24,10 +24,12 @@ constexpr int kCmfLastNm = 830;
 struct PackedTexture {
     texture::TextureData texture;
     double scale = 1.0;  // stored value * scale = spectral value
+    int count = 0;       // spectra packed (pack_spectra)
 };
 
 PackedTexture pack_spectra(const std::vector<NamedSpectrum>& spectra, texture::PixelFormat format);
-// The value a shader fetches for spectrum `index` at `nm` (324..835), undoing the scale.
+// The value a shader fetches for spectrum `index` at `nm` (324..835), undoing the scale. Error for an
+// index that is not one of the packed spectra (a parameter value must never read beyond the table).
 double packed_value(const PackedTexture& packed, int index, int nm);
 
 PackedTexture cmf_texture(const Observer& cie1931, const Observer& cie1964, texture::PixelFormat format);

@@ -107,7 +107,7 @@ TextureData load_exr_texture(const std::string& path, const ResourceLimits& limi
 
 TextureData load_texture_file(const std::string& path, const ResourceLimits& limits) {
     std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error)) throw Error(path + ": no such texture file");
+    if (!std::filesystem::is_regular_file(path, error)) throw Error(path + ": " + not_a_file(path) + " (a texture file was expected)");
     checked_file_size(path, limits);
     const std::string extension = lower_extension(path);
     if (extension == ".dds") return load_dds(path, limits);

@@ -26,7 +26,7 @@ app::CommandRunner add_view_command(CLI::App& app) {
     command->add_option("--render-screenshot", o->render_screenshot, "With --frames: save the render view at exit");
     command->add_option("--script", o->script, "Play UI actions from a file (docs/viewer.md)");
     command->add_option("--ui-scale", o->ui_scale, "Size of the UI (fonts, widgets); default: the monitor's content scale")
-        ->check(CLI::Range(0.5f, 4.0f));
+        ->check(app::finite_range(0.5, 4.0));
     command->add_flag("--stats", o->stats, "At exit, print the UI's frame times and the render times they carried (for benchmarks)");
     return [o, command] {
         // Every render option the viewer shares with `render` takes effect (issue #13); --backend

@@ -19,6 +19,10 @@ std::vector<ErrorLocation> error_locations(const std::string& text);
 // The command that opens `file` at `line` in `editor` (a program with optional arguments, as in
 // $EDITOR): `--goto FILE:LINE` for VS Code and its kin, `FILE:LINE` for Sublime Text, else the
 // `+LINE FILE` that vi, vim, emacs, nano, gedit and kate understand.
+// `file` as an editor must receive it: an absolute path (or "./NAME"), never a word that starts
+// with '+' or '-' (vi runs "+!cmd" as a command; any editor reads "-x" as an option).
+std::string editor_file_argument(const std::string& file);
+
 std::vector<std::string> editor_command(const std::string& editor, const std::string& file, int line);
 
 // Starts the editor of $VISUAL or $EDITOR without waiting for it. Returns what to tell the user.

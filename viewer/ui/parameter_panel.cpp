@@ -11,6 +11,7 @@
 
 #include "core/text.hpp"
 #include "image/color_encoding.hpp"
+#include "effect/parameter_values.hpp"
 #include "effect/parser.hpp"
 
 namespace fxview::ui {
@@ -78,10 +79,14 @@ bool draw_value(const effect::Parameter& p, std::vector<double>& value) {
         return changed;
     }
     if (integer) {
+        // A file's range may exceed an int (1e30): clamped before the cast.
+        const int low = p.ui.min ? static_cast<int>(std::ceil(std::clamp(*p.ui.min, -2147483648.0, 2147483647.0))) : 0;
+        const int high = p.ui.max ? static_cast<int>(std::floor(std::clamp(*p.ui.max, -2147483648.0, 2147483647.0))) : 0;
         if (n == 1 && p.ui.min && p.ui.max && to_lower(p.ui.widget) != "drag")
-            changed = ImGui::SliderInt(label.c_str(), i.data(), static_cast<int>(*p.ui.min), static_cast<int>(*p.ui.max));
+            changed = ImGui::SliderInt(label.c_str(), i.data(), low, high, "%d", ImGuiSliderFlags_AlwaysClamp);
         else
-            changed = ImGui::DragScalarN(label.c_str(), ImGuiDataType_S32, i.data(), n, std::max(speed, 0.1f));
+            changed = ImGui::DragScalarN(label.c_str(), ImGuiDataType_S32, i.data(), n, std::max(speed, 0.1f), p.ui.min ? &low : nullptr,
+                                         p.ui.max ? &high : nullptr, "%d", ImGuiSliderFlags_AlwaysClamp);
         if (changed) std::copy(i.begin(), i.end(), value.begin());
         return changed;
     }
@@ -92,11 +97,12 @@ bool draw_value(const effect::Parameter& p, std::vector<double>& value) {
     if (is_colour(p) && (n == 3 || n == 4)) {
         changed = draw_colour(p, label, f);
     } else if (n == 1 && p.ui.min && p.ui.max && to_lower(p.ui.widget) != "drag")
-        changed = ImGui::SliderFloat(label.c_str(), f.data(), static_cast<float>(*p.ui.min), static_cast<float>(*p.ui.max), "%.4g");
+        changed = ImGui::SliderFloat(label.c_str(), f.data(), static_cast<float>(*p.ui.min), static_cast<float>(*p.ui.max), "%.4g",
+                                     ImGuiSliderFlags_AlwaysClamp);
     else {
         const float low = p.ui.min ? static_cast<float>(*p.ui.min) : 0.0f, high = p.ui.max ? static_cast<float>(*p.ui.max) : 0.0f;
         changed = ImGui::DragScalarN(label.c_str(), ImGuiDataType_Float, f.data(), n, speed, p.ui.min ? &low : nullptr,
-                                     p.ui.max ? &high : nullptr, "%.4g");
+                                     p.ui.max ? &high : nullptr, "%.4g", ImGuiSliderFlags_AlwaysClamp);
     }
     if (changed) std::copy(f.begin(), f.end(), value.begin());
     return changed;
@@ -140,7 +146,15 @@ bool draw_row(const effect::Effect& effect, effect::ParameterValues& values, con
         std::vector<double> part(value.begin() + element * components, value.begin() + (element + 1) * components);
         ImGui::PushID(element);
         if (draw_value(p, part)) {
-            std::copy(part.begin(), part.end(), value.begin() + element * components);
+            std::vector<double> edited = value;
+            std::copy(part.begin(), part.end(), edited.begin() + element * components);
+            // The one rule of every source (effect::value_problem): a typed value out of range or not
+            // whole is not taken; the sliders clamp, so this catches typed-in text.
+            if (!effect::value_problem(p, edited).empty()) {
+                ImGui::PopID();
+                continue;
+            }
+            value = std::move(edited);
             effect::enforce_constraints(effect, values, p.name);  // e.g. Upper never below Lower
             changed = true;
         }

@@ -152,7 +152,7 @@ void PluginPanel::finish(render::EffectSession* session) {
     }
     if (session) {
         const std::vector<std::string> missing = plugin::apply(session->effect(), session->values(), *result);
-        for (const auto& name : missing) result->warnings.push_back(name + " not written: the effect has no such parameter");
+        for (const auto& reason : missing) result->warnings.push_back("not written: " + reason);
         if (!result->technique.empty() && session->effect().find_technique(result->technique)) session->select_technique(result->technique);
     }
     if (curve_.size() < 2) curve_ = result->cost_per_iteration;  // the live reports, else the plugin's own history

@@ -1,0 +1,1 @@
+plugin P < string Type = "film-fit"; string Target = "TargetColour"; string Vary = "Thickness"; string OuterIndex = "OuterIndex"; string FilmIndex = "FilmIndex"; string SubstrateIndex = "SubstrateIndex"; string Modle = "x"; >;

@@ -1,0 +1,2 @@
+plugin P < string Type = "brdf-fit"; string DataFile = "x.csv"; string Model = "ggx"; string Targets = "TargetColour, TargetColour, Thickness"; >;
+plugin R < string Type = "film-fit"; string Target = "TargetColour"; string Vary = "Thickness"; string OuterIndex = "OuterIndex"; string FilmIndex = "FilmIndex"; string SubstrateIndex = "SubstrateIndex"; string Light = "LightSpectrum"; float Angle = 89.9; >;
