@@ -36,7 +36,7 @@ const std::string kCd = kEffects + "/spectral/cd.fx";
 TEST_CASE("--set values pass one rule: finite, in the declared range, whole for ints, an index inside its list") {
     const std::string out = " --size 8x8 --out " + folder("set") + "/o.png";
     // Each of these crashed, ran without end, took gigabytes or became inf before (issue 26, item 4-5).
-    for (const std::string args : {kWavelength + " --set LightSpectrum=99999999", kWavelength + " --set LightSpectrum=-1",
+    for (const std::string& args : {kWavelength + " --set LightSpectrum=99999999", kWavelength + " --set LightSpectrum=-1",
                                    kWavelength + " --set ObjectSpectrum=2147483647", kCd + " --set LightSpectrum=99999999",
                                    kCd + " --technique Grating --set Tracks=2147483647", kWavelength + " --set Lower=-2147483648",
                                    kWavelength + " --set Upper=2147483647", kThinfilm + " --technique FresnelFourier --set SeriesOrder=100000000",
@@ -225,8 +225,26 @@ TEST_CASE("docs/preset.schema.json and fxview agree: every scene key it lists lo
             CHECK(run("check " + effect + " --preset " + write(dir + "/over.json", over.dump(1))).exit_code == 1);
         }
     }
-    for (const auto& [key, rule] : schema["properties"].items()) CHECK((key == "effect" || key == "technique" || key == "parameters" || key == "scene"));
+    for (const auto& [key, rule] : schema["properties"].items()) CHECK((key == "effect" || key == "technique" || key == "note" || key == "$schema" || key == "parameters" || key == "scene"));
+    // The shipped presets follow it.
+    for (const auto& entry : fs::directory_iterator(kEffects + "/brdf/presets"))
+        CHECK(run("check " + effect + " --preset " + entry.path().string()).exit_code == 0);
     const Result extra = run("check " + effect + " --preset " + write(dir + "/extra.json", "{\n \"parameters\": {},\n \"colour\": 1\n}\n"));
     CHECK(extra.exit_code == 1);
     CHECK(has(extra.out, "extra.json:3: unknown preset key \"colour\""));
+}
+
+TEST_CASE("a copy of a shipped effect with wider ranges gets no endless CPU reference") {
+    // References are found by the effect's file name: a stranger's cd.fx with Tracks up to 2^31-1
+    // must not make compare run without end.
+    const std::string dir = folder("reference-bounds");
+    std::ifstream in(kCd);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const size_t at = text.find("int UIMax = 200;");
+    REQUIRE(at != std::string::npos);
+    text.replace(at, 16, "int UIMax = 2147483647;");
+    const std::string copy = write(dir + "/cd.fx", text);
+    const Result r = run("compare " + copy + " --technique Grating --set Tracks=100000 --mesh disc --camera-rotate 50,0,0 --size 16x16");
+    CHECK(r.exit_code == 1);
+    CHECK(has(r.err, "Tracks = 100000 lies outside what the CPU reference computes (1..200)"));
 }

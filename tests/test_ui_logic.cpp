@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -24,6 +25,8 @@ namespace {
 struct Simulation {
     int width = 200, height = 120;
     double per_pixel = 2e-5, fixed = 1e-3;
+    double background = -1;  // what a piece covering nothing costs (clear and sync); < 0: `fixed`
+    std::vector<double> estimate;  // the coverage the schedule is told, when it differs from the truth
     std::vector<double> coverage = std::vector<double>(120, 0.0);
     std::vector<double> piece_seconds;
 
@@ -34,12 +37,13 @@ struct Simulation {
     double cost(const ui::RenderSchedule::Work& w) const {
         double pixels = 0;
         for (int y = w.y; y < w.y + w.height; ++y) pixels += coverage[static_cast<size_t>(y)] * w.width / width;
+        if (pixels < 1 && background >= 0) return background;
         return fixed + per_pixel * pixels;
     }
 
     void run(ui::RenderSchedule& schedule, std::uint64_t key) {
         std::vector<int> drawn(static_cast<size_t>(width * height), 0);
-        schedule.set_coverage(coverage);
+        schedule.set_coverage(estimate.empty() ? coverage : estimate);
         for (int frame = 0; frame < 100000 && (schedule.update(key, false, true), schedule.pending()); ++frame) {
             const ui::RenderSchedule::Work w = schedule.next(width, height);
             REQUIRE(w.height > 0);
@@ -75,6 +79,46 @@ TEST_CASE("a slow picture is drawn in pieces that tile it once, each near the bu
     size_t over = 0;
     for (size_t i = 1; i < heavy.piece_seconds.size(); ++i) over += heavy.piece_seconds[i] > 0.02;
     CHECK(over <= 2);  // the model's first measurements of the object
+}
+
+TEST_CASE("pieces stay bounded by measured time when the model misjudges the picture") {
+    // Issue 27: one piece once held the rest of a 27-second picture. A disc of a heavy shader (0.2 ms a
+    // pixel: a middle row costs 60 ms) under a 10 ms budget, with the cost model misled twice: empty
+    // rows (clear and sync) dearer than the object's rim, and a coverage estimate that misses the disc
+    // altogether (all rows "empty"), so that only measured times can bound the pieces.
+    for (const bool blind : {false, true}) {
+        CAPTURE(blind);
+        Simulation disc;
+        disc.width = 400;
+        disc.height = 200;
+        disc.per_pixel = 2e-4;
+        disc.fixed = 5e-4;
+        disc.background = 0.008;
+        disc.coverage.assign(200, 0.0);
+        for (int y = 40; y < 160; ++y) disc.coverage[static_cast<size_t>(y)] = 2.0 * std::sqrt(3600.0 - (y - 99.5) * (y - 99.5)) * 2.5;
+        if (blind) disc.estimate.assign(200, 0.0);
+        ui::RenderSchedule schedule(0.01);
+        disc.run(schedule, 1);
+        CHECK(schedule.pictures() == 1);
+        double worst = 0, total = 0;
+        for (const double seconds : disc.piece_seconds) worst = std::max(worst, seconds), total += seconds;
+        CHECK(total > 2.0);
+        // Pieces cost 0.5 ms more than the fixed cost the empty rows taught the model (8 ms), so the
+        // budget grows to 4 x 8 = 32 ms (render_schedule.cpp); a piece may reach twice that.
+        const double piece_budget = 4 * 0.008;
+        if (!blind) {
+            CHECK(worst <= 2 * piece_budget);
+            continue;
+        }
+        // Blind, rows double while they keep to the budget: the piece that first meets the disc may
+        // overrun (it holds rows the background made look cheap), but never the rest of the picture,
+        // and after it the measured overrun scales the pieces back to at most two rows of the disc
+        // (one costs 60 ms: whole rows are the least a blind piece can be).
+        CHECK(worst < 0.2 * total);
+        size_t after_overrun = 0;
+        while (after_overrun < disc.piece_seconds.size() && disc.piece_seconds[after_overrun] < 0.14) ++after_overrun;
+        for (size_t i = after_overrun + 1; i < disc.piece_seconds.size(); ++i) CHECK(disc.piece_seconds[i] <= 0.14);
+    }
 }
 
 TEST_CASE("nothing is drawn while the state is unchanged; a new state or an animated effect starts a new picture") {

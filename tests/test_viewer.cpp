@@ -199,6 +199,16 @@ TEST_CASE("broken scripts and options are refused with exit 2") {
     CHECK(run("view " + kDebugFx + " --screenshot x.png").exit_code == 2);  // needs --frames
 }
 
+TEST_CASE("script values pass the rule of every value: a refused one is named and the run goes on") {
+    const std::string effect = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/wavelength.fx", script = temp_path("bad-values.txt");
+    std::ofstream(script) << "set LightSpectrum 99999\nset Lower 2.5\nset Kd 0.5\n";
+    const Result r = run("view " + effect + " --render-size 32x32 --script " + script + " --frames 2");
+    CAPTURE(r.err);
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("LightSpectrum = 99999 is not an entry of its list") != std::string::npos);
+    CHECK(r.err.find("whole numbers of a 32-bit int, not 2.5") != std::string::npos);
+}
+
 TEST_CASE("a cube map becomes the skybox behind the objects") {
     const std::string effect = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/examples/textured.fx";
     const std::string script = temp_path("sky-script.txt"), plain = temp_path("no-sky.png"), sky = temp_path("sky.png");

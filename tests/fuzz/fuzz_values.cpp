@@ -14,7 +14,8 @@ namespace {
 fxview::effect::Effect load(const char* file) {
     fxview::effect::LoadOptions options;
     options.include_dirs = {FXVIEW_SOURCE_EFFECTS_DIR "/lib"};
-    options.item_lists["spectral:library"] = {"E", "A", "D50", "D65", "F11", "TCS09"};
+    // As many names as spectra/library.txt holds at most (the shipped defaults index up to 14).
+    for (int i = 0; i < 64; ++i) options.item_lists["spectral:library"].push_back("S" + std::to_string(i));
     return fxview::effect::load_effect(std::string(FXVIEW_SOURCE_EFFECTS_DIR) + file, options);
 }
 

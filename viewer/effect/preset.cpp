@@ -102,8 +102,10 @@ PresetScene load_preset_scene(const std::string& path, const ResourceLimits& lim
     if (!s.is_object()) throw Error(line_of(path, text, "scene") + "\"scene\" must be an object");
     const std::filesystem::path folder = std::filesystem::path(path).parent_path().empty() ? "." : std::filesystem::path(path).parent_path();
     access.allow_folder(folder);
-    for (const auto& [key, value] : s.items()) {
-        const std::string name = key;  // a structured binding cannot be captured before C++20's clang 16
+    for (auto item = s.begin(); item != s.end(); ++item) {
+        // Not a structured binding: clang before 16 cannot capture one in the lambdas below.
+        const std::string key = item.key(), name = key;
+        const nlohmann::json& value = item.value();
         const std::string where = line_of(path, text, name);
         scene.lines[name] = std::stoi(where.substr(path.size() + 1));
         const auto bad = [&](const char* what) { return Error(where + "scene \"" + name + "\" must be " + what); };
@@ -144,8 +146,8 @@ Preset load_preset(const std::string& path, const Effect& effect, ParameterValue
     if (!json.is_object() || !json.contains("parameters") || !json["parameters"].is_object())
         throw Error(where("parameters") + "a preset needs a \"parameters\" object");
     for (const auto& [key, value] : json.items())  // docs/preset.schema.json: no other keys
-        if (key != "effect" && key != "technique" && key != "parameters" && key != "scene")
-            throw Error(where(key) + "unknown preset key \"" + excerpt(key) + "\" (effect, technique, parameters, scene)");
+        if (key != "effect" && key != "technique" && key != "parameters" && key != "scene" && key != "note" && key != "$schema")
+            throw Error(where(key) + "unknown preset key \"" + excerpt(key) + "\" (effect, technique, note, parameters, scene, $schema)");
     if (json.contains("effect") && !json["effect"].is_string()) throw Error(where("effect") + "\"effect\" must be a string");
     if (json.contains("technique") && !json["technique"].is_string()) throw Error(where("technique") + "\"technique\" must be a string");
     Preset preset;

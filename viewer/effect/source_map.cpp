@@ -108,8 +108,8 @@ void SourceMap::append_file(const std::string& path, const LoadContext& context,
                                               " levels (budget include-depth; raise it with --limit include-depth=N)");
     const SourceLocation whole_file{path, 1};
     if (!fs::is_regular_file(path, error)) {
-        if (included_from) throw EffectError(*included_from, "cannot open included file '" + excerpt(path, 200) + "'");
-        throw EffectError({path, 0}, "cannot open effect file");
+        if (included_from) throw EffectError(*included_from, "cannot open included file '" + excerpt(path, 200) + "': " + not_a_file(path));
+        throw EffectError({path, 0}, "cannot open effect file: " + not_a_file(path));
     }
     const auto size = static_cast<std::int64_t>(fs::file_size(path, error));
     if (!error && static_cast<std::int64_t>(text_.size()) + size > context.limits.source_bytes)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include "core/error.hpp"
@@ -15,10 +16,34 @@
 
 namespace fxview::reference {
 
+namespace {
+
+// What the CPU references compute: the shipped effects' ranges of every value whose cost or table
+// index grows with it. A user's copy of an effect (found by its file name) may declare wider UI
+// ranges; its values are refused here rather than run without end or read beyond a table.
+struct Bound {
+    const char* name;
+    double low, high;
+};
+constexpr Bound kBounds[] = {{"Tracks", 1, 200},  {"Layers", 1, 16},    {"SeriesOrder", 1, 64}, {"Lower", 360, 830},
+                             {"Upper", 360, 830}, {"Steps", 1, 50},     {"Observer", 0, 1},     {"LightSpectrum", 0, 4095},
+                             {"ObjectSpectrum", 0, 4095}, {"SubstrateSpectrum", 0, 4095}};
+
+}  // namespace
+
 double ReferenceContext::number(const std::string& name) const {
     const auto found = values.numbers.find(name);
     if (found == values.numbers.end() || found->second.empty()) throw Error("reference: the effect has no parameter " + name);
-    return found->second[0];
+    const double value = found->second[0];
+    if (!std::isfinite(value)) throw Error("reference: " + name + " is not a finite number");
+    for (const Bound& bound : kBounds)
+        if (name == bound.name && !(value >= bound.low && value <= bound.high))
+        {
+            char text[200];
+            std::snprintf(text, sizeof text, " = %.9g lies outside what the CPU reference computes (%g..%g)", value, bound.low, bound.high);
+            throw Error("reference: " + name + text);
+        }
+    return value;
 }
 
 const spectral::PackedTexture& ReferenceContext::generated(const std::string& texture) const {

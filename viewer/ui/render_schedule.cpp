@@ -7,7 +7,16 @@ namespace fxview::ui {
 namespace {
 
 // The first piece's covered pixels, before anything is measured: small enough for any shader.
-constexpr double kProbePixels = 256;
+constexpr double kProbePixels = 64;
+constexpr double kMaxPieceSeconds = 0.06;
+
+// How an allowance follows a measured piece: by half again when it kept to the budget (from at
+// least what it held), scaled down by its overrun when it did not.
+double follow(double allowance, double used, double seconds, double budget, double floor) {
+    const double factor = std::min(1.5, budget / std::max(seconds, 1e-9));
+    const double next = factor >= 1.0 ? std::max(allowance, used) * factor : used * factor;
+    return std::max(floor, next);
+}
 
 }  // namespace
 
@@ -32,12 +41,27 @@ RenderSchedule::Work RenderSchedule::next(int width, int height) {
     }
     if (!dirty_ || height <= 0 || width <= 0) return {};
     if (!progressive_) return {0, 0, width, height};
-    const double budget_pixels = per_pixel_ > 0 ? std::max(0.0, (budget_ - fixed_) / per_pixel_) : kProbePixels;
+    // Small pieces cost more than their share: each pays a draw's fixed cost, and a software
+    // rasteriser shades 2x2 quads in 64x64 bins, one thread a bin, so a one-row strip of a few
+    // dozen pixels wastes most of its work (MultiLayer with 16 layers: 16 s whole, 142 s in 14 ms
+    // pieces). The budget therefore grows with the picture: 4x the fixed cost, and 1/150 of the
+    // picture's predicted cost, up to 100 ms a piece, which keeps UI frames under a quarter second.
+    double covered_total = 0;
+    for (int row = 0; row < height; ++row) covered_total += covered(row);
+    const double predicted_picture = per_pixel_ * covered_total;
+    budget_used_ = std::clamp(std::max(4.0 * fixed_, predicted_picture / 150.0), budget_, std::max(budget_, kMaxPieceSeconds));
+    double budget_pixels = per_pixel_ > 0 ? std::max(0.0, (budget_used_ - fixed_) / per_pixel_) : kProbePixels;
+    // Bounded by what was measured, not by the model alone: the model proposes, the allowances
+    // (grown by half again per piece that kept to the budget, scaled down by an overrun) dispose. The
+    // model can be wrong (rim pixels cheaper than the middle, a fixed cost misjudged, which drove the
+    // per-pixel estimate towards 0 and once made one piece of the rest of a 27-second picture).
+    budget_pixels = std::min(budget_pixels, allowed_pixels_);
     if (next_column_ == 0) {
-        // Whole rows while they fit the budget (at least one).
+        // Whole rows while they fit the budget (at least one), and never more rows than allowed:
+        // rows the coverage estimate calls empty may not be (a thin part it missed).
         double pixels = 0;
         int rows = 0;
-        while (next_row_ + rows < height) {
+        while (next_row_ + rows < height && rows + 1 <= allowed_rows_) {
             const double more = covered(next_row_ + rows);
             if (rows > 0 && pixels + more > budget_pixels) break;
             pixels += more;
@@ -50,7 +74,9 @@ RenderSchedule::Work RenderSchedule::next(int width, int height) {
     }
     // Column tiles of the row: the covered pixels are taken as spread evenly along it.
     const double row_pixels = std::max(covered(next_row_), 1.0);
-    const int columns = std::clamp(static_cast<int>(width * budget_pixels / row_pixels), 16, width - next_column_);
+    double wanted = std::clamp(width * budget_pixels / row_pixels, 16.0, static_cast<double>(width));
+    wanted = std::min(wanted, std::max(16.0, allowed_columns_));
+    const int columns = std::min(static_cast<int>(wanted), width - next_column_);
     return {next_column_, next_row_, columns, 1};
 }
 
@@ -60,8 +86,13 @@ void RenderSchedule::done(const Work& work, double seconds) {
     for (int r = work.y; r < work.y + work.height; ++r) pixels += covered(r, static_cast<double>(work.width) / std::max(width_, 1));
     // The model follows the measurements, rising at once and falling by halves (a cheap piece must
     // not make the next one too large).
+    if (work.width == width_) allowed_rows_ = follow(allowed_rows_, work.height, seconds, budget_used_, 1.0) + (seconds <= budget_used_ ? 1.0 : 0.0);
+    else allowed_columns_ = follow(allowed_columns_, work.width, seconds, budget_used_, 16.0);
+    if (pixels >= 1) allowed_pixels_ = follow(allowed_pixels_, pixels, seconds, budget_used_, 1.0);
     if (pixels < 1) {
-        fixed_ = 0.5 * fixed_ + 0.5 * seconds;
+        // An "empty" piece that took longer than any piece may was not empty (the coverage estimate
+        // missed something): it must not teach the model a fixed cost.
+        if (seconds <= 2.0 * kMaxPieceSeconds) fixed_ = 0.5 * fixed_ + 0.5 * seconds;
     } else {
         const double measured = std::max(seconds - fixed_, 0.0) / pixels;
         per_pixel_ = per_pixel_ > 0 ? std::max(measured, 0.5 * (per_pixel_ + measured)) : measured;

@@ -73,6 +73,9 @@ private:
     int width_ = 0, height_ = 0, next_row_ = 0, next_column_ = 0, pictures_ = 0;
     std::vector<double> coverage_;
     double fixed_ = 0, per_pixel_ = 0;  // the cost model; per_pixel_ 0: not measured yet
+    // What a piece may hold, from the measured pieces before it (render_schedule.cpp): covered
+    // pixels, whole rows, columns of a tile; and the budget the current piece was sized for.
+    double allowed_pixels_ = 64, allowed_rows_ = 1, allowed_columns_ = 16, budget_used_ = 0;
     double picture_seconds_ = 0, last_picture_seconds_ = 0;
 };
 

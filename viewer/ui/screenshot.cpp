@@ -3,6 +3,7 @@
 #include <glad/gl.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <vector>
 
@@ -45,6 +46,30 @@ void write_picture(const std::string& path, image::FloatImage picture, bool srgb
     if (std::filesystem::path(path).extension() == ".png") image::apply_display_transform(picture, display);
     create_parent(path);
     image::write_image(path, picture, srgb_display ? image::Encoding::Srgb : image::Encoding::Linear);
+}
+
+ScreenshotJob::ScreenshotJob(std::string path, int width, int height, int samples, bool transparent)
+    : path_(std::move(path)), transparent_(transparent), target_(std::make_unique<gl::RenderTarget>(gl::RenderTargetDesc{width, height, 1, samples})) {
+    schedule_.update(1, false, true);
+}
+
+bool ScreenshotJob::step(const std::function<void(const gl::RenderTarget&)>& render, bool progressive, bool srgb_display,
+                         const image::DisplaySettings& display) {
+    const int width = target_->width(), height = target_->height();
+    schedule_.update(1, false, progressive);
+    const RenderSchedule::Work work = schedule_.next(width, height);
+    if (work.height > 0) {
+        const auto start = std::chrono::steady_clock::now();
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(work.x, height - work.y - work.height, work.width, work.height);  // y from the top; GL's from the bottom
+        render(*target_);
+        glDisable(GL_SCISSOR_TEST);
+        glFinish();
+        schedule_.done(work, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    if (schedule_.pending()) return false;
+    write_picture(path_, target_->read_color(0), srgb_display, transparent_, display);
+    return true;
 }
 
 }  // namespace fxview::ui

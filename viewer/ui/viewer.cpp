@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -45,6 +46,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// SIGTERM/SIGINT end the loop like closing the window, so that `--stats` is still printed. The one
+// global state of the viewer: a signal handler can reach nothing else.
+volatile std::sig_atomic_t stop_requested = 0;
+void request_stop(int) { stop_requested = 1; }
+
 class Viewer {
 public:
     explicit Viewer(const ViewerOptions& options) : options_(options) {
@@ -79,10 +85,13 @@ public:
 
     int run() {
         auto last_frame = std::chrono::steady_clock::now();
-        while (!glfwWindowShouldClose(window_)) {
-            glfwPollEvents();
+        std::signal(SIGTERM, request_stop);
+        std::signal(SIGINT, request_stop);
+        while (!glfwWindowShouldClose(window_) && !stop_requested) {
+            const double slept = wait_or_poll_events();
             const auto now = std::chrono::steady_clock::now();
-            frame_seconds_ = std::chrono::duration<double>(now - last_frame).count();
+            // A frame's time is its work, not the idle wait before it.
+            frame_seconds_ = std::chrono::duration<double>(now - last_frame).count() - slept;
             last_frame = now;
             if (effect_.poll()) on_effect_opened();  // hot reload; a failed start retried when its file is saved
             plugin_panel_.update(session());  // a running plugin's live parameters; its result when done
@@ -94,6 +103,26 @@ public:
         }
         if (options_.stats) print_stats();
         return exit_code_;
+    }
+
+    // Idle when idle: with the picture complete and nothing running, the loop sleeps until input
+    // (or half a second, for the file watcher) instead of drawing frames nobody needs. After an
+    // event a few frames follow, so that ImGui's hover and release states settle. Returns the
+    // seconds it slept.
+    double wait_or_poll_events() {
+        const bool busy = !picture_done() || picture_animated() || plugin_panel_.running() || script_position_ < script_.size() ||
+                          options_.frames > 0 || awake_frames_ > 0 || shot_job_ || !pending_view_shot_.empty();
+        if (busy) {
+            glfwPollEvents();
+            awake_frames_ = std::max(0, awake_frames_ - 1);
+            return 0.0;
+        }
+        const auto start = std::chrono::steady_clock::now();
+        constexpr double kTimeout = 0.5;
+        glfwWaitEventsTimeout(kTimeout);
+        const double slept = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        awake_frames_ = slept < 0.9 * kTimeout ? 3 : 0;  // woken by an event, not by the timeout
+        return slept;
     }
 
     // `view --stats`: the UI's frame times and the rendering they carried (docs/benchmarks.md).
@@ -240,6 +269,26 @@ private:
         return false;
     }
 
+    // Coarse to fine: a picture that took long starts as a low-resolution one, drawn whole (within
+    // about 50 ms, by the last complete picture's measured time) and scaled up into the view; the
+    // pieces then refine it row by row. A drag, which starts a new picture at every move, so shows
+    // a coarse but whole picture at once instead of a torn one. True when it drew one this frame.
+    bool render_coarse_preview(std::uint64_t key, int width, int height) {
+        constexpr double kSlowPicture = 0.15, kPreviewSeconds = 0.05;
+        const double last = schedule_.last_picture_seconds();
+        if (!schedule_.pending() || schedule_.refining() || key == preview_key_ || last < kSlowPicture || !picture_progressive()) return false;
+        preview_scale_ = std::clamp(static_cast<int>(std::ceil(std::sqrt(last / kPreviewSeconds))), 2, 32);
+        const int preview_width = (width + preview_scale_ - 1) / preview_scale_, preview_height = (height + preview_scale_ - 1) / preview_scale_;
+        if (!preview_ || preview_->width() != preview_width || preview_->height() != preview_height)
+            preview_ = std::make_unique<gl::RenderTarget>(gl::RenderTargetDesc{preview_width, preview_height, 1, 0});
+        render_scene(*preview_);
+        glBlitNamedFramebuffer(preview_->framebuffer(), target_->framebuffer(), 0, 0, preview_width, preview_height, 0, 0, width, height,
+                               GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        glFinish();
+        preview_key_ = key;
+        return true;
+    }
+
     bool picture_progressive() const {
         if (!session()) return true;
         for (const auto& o : view_.objects)
@@ -257,10 +306,15 @@ private:
         if (!paused_) {
             // Render only what changed: nothing while the picture is current, strips across UI frames
             // while a slow picture refines (render_schedule.hpp).
-            schedule_.update(render_key(width, height), picture_animated(), picture_progressive());
+            const std::uint64_t key = render_key(width, height);
+            schedule_.update(key, picture_animated(), picture_progressive());
             update_coverage(width, height);
-            const RenderSchedule::Work work = schedule_.next(width, height);
-            if (work.height > 0) {
+            const bool coarse = render_coarse_preview(key, width, height);
+            const RenderSchedule::Work work = coarse ? RenderSchedule::Work{} : schedule_.next(width, height);
+            if (coarse) {
+                display_->run(target_->color_texture(0), width, height, srgb_display_, display_settings_);
+                displayed_settings_ = display_settings_;
+            } else if (work.height > 0) {
                 const auto start = std::chrono::steady_clock::now();
                 const bool piece = work.width < width || work.height < height;
                 if (piece) {  // y counts from the top of the picture, GL's from the bottom
@@ -280,6 +334,7 @@ private:
                 displayed_settings_ = display_settings_;
             }
         }
+        advance_screenshots();
         imgui_->begin_frame();
         draw_ui(window_width, window_height);
         handle_keys();
@@ -300,20 +355,53 @@ private:
     // The render view's picture as rendered (linear values, alpha kept).
     void write_render(const std::string& path) { write_picture(path, target_->read_color(0), srgb_display_, true, display_settings_); }
 
-    // What the view shows, at any size (screenshot.hpp).
-    void screenshot_at(const std::string& path, int width, int height) {
-        gl::RenderTarget shot({width, height, 1, samples_});
-        render_scene(shot);
-        write_picture(path, shot.read_color(0), srgb_display_, transparent_shots_, display_settings_);
+    // F12 and the button: by default exactly what the view shows (its size, aspect and display
+    // transform), written once its picture is complete; at a size of its own only when asked for,
+    // rendered in pieces across frames (screenshot.hpp). Neither blocks the UI.
+    void save_screenshot() {
+        if (shot_at_view_size_) {
+            pending_view_shot_ = shot_input_;
+            status_ = "screenshot " + pending_view_shot_ + ": when the picture is complete";
+            return;
+        }
+        shot_job_ = std::make_unique<ScreenshotJob>(shot_input_, shot_size_.x, shot_size_.y, samples_, transparent_shots_);
+        shot_key_ = render_key(shot_size_.x, shot_size_.y);
+    }
+
+    void write_view_shot(const std::string& path) {
+        write_picture(path, target_->read_color(0), srgb_display_, transparent_shots_, display_settings_);
         status_ = "saved " + path;
     }
 
-    void save_screenshot() {
+    // Screenshots waiting for the view's picture, or drawing their own pieces (after the view's).
+    void advance_screenshots() {
         try {
-            screenshot_at(shot_input_, shot_size_.x, shot_size_.y);
+            if (!pending_view_shot_.empty() && target_ && picture_done()) {
+                const std::string path = std::move(pending_view_shot_);
+                pending_view_shot_.clear();
+                write_view_shot(path);
+            }
+            if (!shot_job_ || !picture_done()) return;
+            if (render_key(shot_size_.x, shot_size_.y) != shot_key_) {  // the scene changed: start over, never a torn picture
+                shot_job_ = std::make_unique<ScreenshotJob>(shot_job_->path(), shot_size_.x, shot_size_.y, samples_, transparent_shots_);
+                shot_key_ = render_key(shot_size_.x, shot_size_.y);
+            }
+            if (shot_job_->step([&](const gl::RenderTarget& target) { render_scene(target); }, picture_progressive(), srgb_display_,
+                                display_settings_)) {
+                status_ = "saved " + shot_job_->path();
+                shot_job_.reset();
+            }
         } catch (const std::exception& e) {
             status_ = e.what();
+            shot_job_.reset();
         }
+    }
+
+    // Whether the view's picture shows the current state (a script action that reads it waits
+    // for the frames that render it otherwise).
+    bool picture_current() {
+        schedule_.update(render_key(target_->width(), target_->height()), false, picture_progressive());
+        return picture_done();
     }
 
     bool pick_at(int x, int y) {
@@ -386,10 +474,14 @@ private:
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("frame: the UI's frame time; picture: what the last complete picture took to render (the view is "
                               "drawn only when something changed, slow pictures in strips across frames)");
-        if (schedule_.refining()) {
-            char text[64];
-            std::snprintf(text, sizeof text, "refining %.0f %%", schedule_.progress() * 100);
-            ImGui::ProgressBar(static_cast<float>(schedule_.progress()), ImVec2(-1, 0), text);
+        {
+            // Always drawn, so that the widgets below keep their place when a picture starts refining.
+            char text[96];
+            const bool coarse = schedule_.pending() && preview_key_ == render_key(target_ ? target_->width() : 0, target_ ? target_->height() : 0);
+            if (!schedule_.pending()) std::snprintf(text, sizeof text, "picture complete");
+            else if (coarse) std::snprintf(text, sizeof text, "preview at 1/%d resolution, refining %.0f %%", preview_scale_, schedule_.progress() * 100);
+            else std::snprintf(text, sizeof text, "refining %.0f %%", schedule_.progress() * 100);
+            ImGui::ProgressBar(schedule_.pending() ? static_cast<float>(schedule_.progress()) : 1.0f, ImVec2(-1, 0), text);
         }
         if (imgui_->font_fallback())
             ImGui::TextDisabled("UI font %s missing (fonts-dejavu-core): Greek letters show as '?'", FXVIEW_UI_FONT);
@@ -570,11 +662,20 @@ private:
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("PBR Neutral keeps colours below 0.76 (less a toe offset of 0.04) and compresses highlights");
         if (ImGui::Button("Fullscreen (F11)")) toggle_fullscreen();
         ImGui::Separator();
+        ImGui::Checkbox("screenshot at the view's size", &shot_at_view_size_);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Off: render the screenshot at a size of its own, in pieces, while the UI goes on");
+        ImGui::BeginDisabled(shot_at_view_size_);
         ImGui::InputInt2("screenshot size", &shot_size_.x);
+        ImGui::EndDisabled();
         shot_size_ = glm::clamp(shot_size_, glm::ivec2(1), glm::ivec2(16384));
         ImGui::InputText("file (.png/.exr)", shot_input_, sizeof shot_input_);
         ImGui::Checkbox("transparent background", &transparent_shots_);
         if (ImGui::Button("Save screenshot (F12)")) save_screenshot();
+        if (shot_job_) {
+            char text[64];
+            std::snprintf(text, sizeof text, "screenshot %.0f %%", shot_job_->progress() * 100);
+            ImGui::ProgressBar(static_cast<float>(shot_job_->progress()), ImVec2(-1, 0), text);
+        }
     }
 
     void draw_help() {
@@ -648,7 +749,11 @@ private:
             view_.rotate_selected(math::rotation_from_euler_degrees({std::stof(args[1]), std::stof(args[2]), std::stof(args[3])}));
             view_.selected = saved;
         } else if (a.verb == "pick") {
-            render_scene(*target_);
+            if (!picture_current()) {  // the picture the pick reads is rendered first, in pieces
+                --script_position_;
+                wait_frames_ = 1;
+                return;
+            }
             if (!pick_at(std::stoi(args[0]), std::stoi(args[1]))) throw UsageError("pick outside the render view");
             const auto& p = pick_.info();
             std::cout << nlohmann::json{{"x", p.x}, {"y", p.y}, {"width", target_->width()}, {"height", target_->height()},
@@ -659,11 +764,14 @@ private:
         } else if (a.verb == "screenshot") {
             pending_window_shots_.push_back(args[0]);
             wait_frames_ = 1;
-        } else if (a.verb == "save-screenshot") {  // as the Save screenshot button, at the render view's size
-            screenshot_at(args[0], target_->width(), target_->height());
-        } else if (a.verb == "render-screenshot") {
-            render_scene(*target_);
-            write_render(args[0]);
+        } else if (a.verb == "save-screenshot" || a.verb == "render-screenshot") {  // the view's picture, once current
+            if (!picture_current()) {
+                --script_position_;  // again after the frames that render it
+                wait_frames_ = 1;
+                return;
+            }
+            if (a.verb == "save-screenshot") write_view_shot(args[0]);  // as the Save screenshot button
+            else write_render(args[0]);
         } else if (a.verb == "skybox") {
             skybox_name_ = args[0] == "off" ? "" : args[0];
             if (!skybox_name_.empty() && !skybox_texture()) throw UsageError("no cube map texture '" + args[0] + "' in the effect");
@@ -799,6 +907,13 @@ private:
     ViewMouse mouse_;
     std::string status_;
     glm::ivec2 view_size_{640, 480}, windowed_pos_{0}, windowed_size_{1280, 800}, shot_size_{1920, 1080};
+    std::unique_ptr<gl::RenderTarget> preview_;  // the coarse picture a slow one starts with
+    std::uint64_t preview_key_ = 0;
+    int preview_scale_ = 1;
+    bool shot_at_view_size_ = true;          // screenshots: the view as it is, unless a size of their own is asked for
+    std::string pending_view_shot_;          // written when the view's picture is complete
+    std::unique_ptr<ScreenshotJob> shot_job_;  // a screenshot at shot_size_, rendered in pieces
+    std::uint64_t shot_key_ = 0;
     bool paused_ = false, vsync_ = true, srgb_display_ = true, show_help_ = false, transparent_shots_ = false;
     int samples_ = 0, frame_number_ = 0, exit_code_ = 0;
     double frame_seconds_ = 0;
@@ -816,6 +931,7 @@ private:
     std::vector<ScriptAction> script_;
     size_t script_position_ = 0;
     int wait_frames_ = 0;
+    int awake_frames_ = 3;  // frames to draw before the loop may sleep (wait_or_poll_events)
 };
 
 }  // namespace
