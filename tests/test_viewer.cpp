@@ -269,6 +269,8 @@ TEST_CASE("measured.fx's brdf-fit plugin gives the same parameters in the viewer
     const auto got = nlohmann::json::parse(viewer.out.substr(0, viewer.out.find('\n')))["plugin"];
     // The same code on the same data and values: bit-identical numbers (JSON writes doubles exactly).
     CHECK(got["parameters"] == expected["parameters"]);
+    // The plugin declares Technique = "Fitted": the objects show the fit, not the measured data.
+    CHECK(nlohmann::json::parse(viewer.out.substr(0, viewer.out.find('\n')))["technique"] == "Fitted");
 
     // A full-density MERL file (seconds of fitting) on the worker thread: the window keeps drawing
     // frames meanwhile (at 60 FPS under Xvfb here: 258 frames in 4.3 s), and the result is the CLI's.
@@ -283,12 +285,19 @@ TEST_CASE("measured.fx's brdf-fit plugin gives the same parameters in the viewer
     CHECK(waited["plugin"]["parameters"] == nlohmann::json::parse(merl_cli.out)["parameters"]);
     // At least 10 frames: far below what the machine draws, far above the 1-2 a blocked UI would.
     CHECK(waited["frames_while_running"].get<int>() >= 10);
+    CHECK(waited["technique"] == "Fitted");  // as the Plugins tab's Run: switched when it started
 
     // An unknown plugin is a usage error of the script, reported with its line; the viewer goes on.
     std::ofstream(script) << "plugin Nope\n";
     const Result bad = run("view " + measured + " --render-size 64x64 --script " + script + " --frames 2");
     CHECK(bad.exit_code != 0);
     CHECK(bad.err.find("no plugin 'Nope'") != std::string::npos);
+
+    // Numbers in scripts are checked: a clear message naming the verb, not std::stoi's "stoi".
+    std::ofstream(script) << "pick 3x 4\n";
+    const Result bad_number = run("view " + measured + " --render-size 64x64 --script " + script + " --frames 2");
+    CHECK(bad_number.exit_code != 0);
+    CHECK(bad_number.err.find("script line 1: pick: '3x' is not a whole number") != std::string::npos);
 }
 
 TEST_CASE("an effect refused by the file-access policy opens once its folder is allowed, edits kept") {

@@ -102,6 +102,7 @@ public:
 
     std::string name() const override { return name_; }
     std::string type() const override { return "brdf-fit"; }
+    std::string technique() const override { return technique_; }
     std::string description() const override {
         char text[200];
         std::snprintf(text, sizeof text, "fit %s to the measured BRDF of %s (limit %.0f deg, %s solver)", model_->title().c_str(), data_.c_str(),

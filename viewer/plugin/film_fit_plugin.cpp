@@ -107,6 +107,7 @@ public:
 
     std::string name() const override { return name_; }
     std::string type() const override { return "film-fit"; }
+    std::string technique() const override { return technique_; }
     std::string description() const override {
         char text[200];
         std::snprintf(text, sizeof text, "find the %s (%.0f-%.0f nm) whose interference colour at %.0f deg has the chromaticity of %s",

@@ -66,6 +66,8 @@ public:
     virtual std::string description() const = 0;   // one line for the UI and `plugin list`
     virtual std::vector<std::string> inputs() const = 0;   // parameters and samplers it reads
     virtual std::vector<std::string> outputs() const = 0;  // parameters it writes
+    // The technique that shows its outputs (selected while it runs and after); empty: the current one.
+    virtual std::string technique() const { return {}; }
     // Runs on a snapshot of the values; must not touch anything shared (it may run on a worker
     // thread while the effect is edited or reloaded). `user_file`, when not empty, replaces the file
     // of its first input: a file the user named (CLI --data, the viewer's field), so the effect's

@@ -16,20 +16,20 @@ namespace {
 
 const ImVec4 kRed(1.0f, 0.4f, 0.3f, 1.0f), kGreen(0.5f, 0.9f, 0.5f, 1.0f), kAmber(1.0f, 0.75f, 0.3f, 1.0f);
 
-// The cost curve on a log axis with its decades labelled: costs fall over orders of magnitude.
-void draw_cost_curve(const std::vector<double>& costs) {
+// One stage's cost curve on a log axis with its decades labelled: costs fall over orders of magnitude.
+void draw_cost_curve(const std::string& stage, const std::vector<double>& costs) {
     std::vector<float> curve;
     for (const double c : costs)
         if (c > 0 && std::isfinite(c)) curve.push_back(static_cast<float>(std::log10(c)));
     if (curve.size() < 2) return;
     const auto [low, high] = std::minmax_element(curve.begin(), curve.end());
     const float bottom = std::floor(*low), top = std::max(std::ceil(*high), bottom + 1.0f);
-    ImGui::Text("cost (log scale): 1e%+.0f at the top, 1e%+.0f at the bottom; %zu steps", top, bottom, curve.size());
+    ImGui::Text("%s%scost (log scale): 1e%+.0f at the top, 1e%+.0f at the bottom; %zu reports", stage.c_str(),
+                stage.empty() ? "" : ": ", top, bottom, curve.size());
     char overlay[64];
     std::snprintf(overlay, sizeof overlay, "last %.4g", std::pow(10.0, curve.back()));
-    ImGui::PlotLines("##cost", curve.data(), static_cast<int>(curve.size()), 0, overlay, bottom, top,
-                     ImVec2(ImGui::GetContentRegionAvail().x, 90));
-    ImGui::TextDisabled("x: reports of the solver (search, then polish)");
+    ImGui::PlotLines(("##cost" + stage).c_str(), curve.data(), static_cast<int>(curve.size()), 0, overlay, bottom, top,
+                     ImVec2(ImGui::GetContentRegionAvail().x, 70));
 }
 
 }  // namespace
@@ -70,8 +70,17 @@ bool PluginPanel::start(render::EffectSession* session, const std::string& name,
     }
     last_plugin_ = plugin->name();
     before_ = session->values();
+    technique_before_ = session->technique();
+    technique_change_.clear();
+    switched_technique_ = false;
+    // The live parameters are seen with the technique that reads them.
+    if (const std::string t = plugin->technique(); !t.empty() && t != technique_before_ && effect.find_technique(t)) {
+        session->select_technique(t);
+        technique_change_ = t;
+        switched_technique_ = true;
+    }
     result_.reset();
-    curve_.clear();
+    curves_.clear();
     run_ = std::make_shared<PluginRun>();
     worker_ = std::thread([run = run_, plugin, values = session->values(), user_file] {
         const plugin::Reporter reporter(
@@ -79,7 +88,9 @@ bool PluginPanel::start(render::EffectSession* session, const std::string& name,
                 const std::lock_guard lock(run->mutex);
                 run->progress = p;
                 run->fresh = true;
-                if (p.cost > 0) run->curve.push_back(p.cost);
+                if (!(p.cost > 0)) return;
+                if (run->curves.empty() || run->curves.back().first != p.stage) run->curves.push_back({p.stage, {}});
+                run->curves.back().second.push_back(p.cost);
             },
             &run->cancel);
         std::optional<plugin::Result> result;
@@ -123,7 +134,7 @@ void PluginPanel::update(render::EffectSession* session) {
         const std::lock_guard lock(run_->mutex);
         if (run_->fresh) progress = run_->progress;
         run_->fresh = false;
-        curve_ = run_->curve;
+        curves_ = run_->curves;
         done = run_->done;
     }
     if (progress && session && !done) {  // live: the picture follows the solver
@@ -147,15 +158,24 @@ void PluginPanel::finish(render::EffectSession* session) {
         if (session) {  // the live updates are undone: a failed run changes nothing
             for (auto& [name, value] : session->values().numbers)
                 if (const auto b = before_.numbers.find(name); b != before_.numbers.end() && b->second.size() == value.size()) value = b->second;
+            if (switched_technique_ && session->effect().find_technique(technique_before_)) {
+                session->select_technique(technique_before_);
+                technique_change_ = technique_before_;
+            }
         }
         return;
     }
     if (session) {
         const std::vector<std::string> missing = plugin::apply(session->effect(), session->values(), *result);
         for (const auto& reason : missing) result->warnings.push_back("not written: " + reason);
-        if (!result->technique.empty() && session->effect().find_technique(result->technique)) session->select_technique(result->technique);
+        if (!result->technique.empty() && session->effect().find_technique(result->technique)) {
+            session->select_technique(result->technique);
+            technique_change_ = result->technique;
+        }
     }
-    if (curve_.size() < 2) curve_ = result->cost_per_iteration;  // the live reports, else the plugin's own history
+    size_t reports = 0;
+    for (const auto& [stage, costs] : curves_) reports += costs.size();
+    if (reports < 2) curves_ = {{"", result->cost_per_iteration}};  // the live reports, else the plugin's own history
     if (result->preview) preview_ = upload_ui_image(*result->preview, true);
     result_ = std::move(result);
 }
@@ -195,7 +215,7 @@ void PluginPanel::draw(render::EffectSession* session) {
         start(session, plugin.name(), data_file_);
     }
     if (!error_.empty()) ImGui::TextColored(kRed, "%s", error_.c_str());
-    draw_cost_curve(curve_);
+    for (const auto& [stage, costs] : curves_) draw_cost_curve(stage, costs);
     if (result_ && !running()) {
         ImGui::Separator();
         ImGui::Text("%s", last_plugin_.c_str());

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "gl/objects.hpp"
@@ -18,12 +19,16 @@
 
 namespace fxview::ui {
 
+// The cost per report, one curve per stage: stages may fit different data (the BRDF fit's search
+// runs on a subset, its polish on all samples), so their costs do not share an axis.
+using CostCurves = std::vector<std::pair<std::string, std::vector<double>>>;
+
 // What the worker thread and the UI thread share; guarded by `mutex` apart from `cancel`.
 struct PluginRun {
     std::mutex mutex;
     std::optional<plugin::Progress> progress;  // the latest report
     bool fresh = false;                        // a report the UI has not applied yet
-    std::vector<double> curve;                 // cost per report
+    CostCurves curves;
     std::optional<plugin::Result> result;
     std::string error;
     bool done = false;
@@ -50,6 +55,9 @@ public:
     const std::optional<plugin::Result>& result() const { return result_; }
     const std::string& error() const { return error_; }
     const std::string& last_plugin() const { return last_plugin_; }
+    // The technique the objects should switch to, once: the plugin's while it runs and after it
+    // succeeded, the one before it after a failure or Cancel. Empty when nothing changed.
+    std::string take_technique_change() { return std::exchange(technique_change_, {}); }
 
 private:
     void finish(render::EffectSession* session);
@@ -62,9 +70,11 @@ private:
     std::shared_ptr<PluginRun> run_;
     std::thread worker_;
     effect::ParameterValues before_;  // restored when a run fails or is cancelled
+    std::string technique_before_, technique_change_;
+    bool switched_technique_ = false;  // start() selected the plugin's technique
     std::string last_plugin_, error_;
     std::optional<plugin::Result> result_;
-    std::vector<double> curve_;
+    CostCurves curves_;
     UiImage preview_;
 };
 

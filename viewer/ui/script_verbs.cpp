@@ -259,6 +259,7 @@ void Viewer::verb_wait_effect(const ScriptAction& a) {
 // Starts a plugin and goes on: the window keeps drawing while it runs (plugin-wait).
 void Viewer::verb_plugin_start(const ScriptAction& a) {
     if (!plugin_panel_.start(session(), a.arguments[0])) throw UsageError(plugin_panel_.error());
+    follow_plugin_technique();
     plugin_start_frame_ = frame_number_;
     plugin_start_time_ = std::chrono::steady_clock::now();
 }
@@ -274,6 +275,7 @@ void Viewer::verb_plugin_wait(const ScriptAction&) {
     const int frames = frame_number_ - plugin_start_frame_;
     std::cout << nlohmann::json{{"plugin", {{"name", plugin_panel_.last_plugin()}, {"parameters", plugin_panel_.result()->parameters},
                                             {"converged", plugin_panel_.result()->converged}}},
+                                {"technique", view_.objects.empty() ? session()->technique() : view_.objects.front().technique},
                                 {"frames_while_running", frames}, {"seconds", seconds}}
                      .dump()
               << std::endl;
@@ -287,9 +289,10 @@ void Viewer::verb_plugin_run(const ScriptAction& a) {
     plugin_panel_.wait(session());
     if (!plugin_panel_.result()) throw Error(plugin_panel_.last_plugin() + ": " + plugin_panel_.error());
     const plugin::Result& r = *plugin_panel_.result();
-    for (auto& o : view_.objects) o.technique = session()->technique();
+    follow_plugin_technique();
     std::cout << nlohmann::json{{"plugin", {{"name", plugin_panel_.last_plugin()}, {"parameters", r.parameters},
-                                            {"converged", r.converged}, {"warnings", r.warnings}}}}
+                                            {"converged", r.converged}, {"warnings", r.warnings}}},
+                                {"technique", view_.objects.empty() ? session()->technique() : view_.objects.front().technique}}
                      .dump()
               << std::endl;
 }

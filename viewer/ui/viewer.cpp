@@ -97,6 +97,7 @@ int Viewer::run() {
         last_frame = now;
         if (effect_.poll()) on_effect_opened();  // hot reload; a failed start retried when its file is saved
         plugin_panel_.update(session());  // a running plugin's live parameters; its result when done
+        follow_plugin_technique();
         if (target_) run_script_step();  // actions need the render view, made by the first frame
         frame();
         ++frame_number_;
@@ -390,6 +391,12 @@ bool Viewer::retry_once_picture_is_current() {
 
 bool Viewer::pick_at(int x, int y) {
     return pick_.pick(target_->read_color(0), x, y, srgb_display_, render_key(target_->width(), target_->height()));
+}
+
+void Viewer::follow_plugin_technique() {
+    const std::string technique = plugin_panel_.take_technique_change();
+    if (!technique.empty())
+        for (auto& o : view_.objects) o.technique = technique;
 }
 
 int run_viewer(const ViewerOptions& options) {

@@ -47,6 +47,9 @@ public:
 private:
     // A newly opened effect: every object shows it, with its technique.
     void on_effect_opened();
+    // Objects show the technique a plugin switched to (its own while it runs and after; the
+    // previous one after a failure or Cancel).
+    void follow_plugin_technique();
     render::EffectSession* session() { return effect_.session(); }
     const render::EffectSession* session() const { return effect_.session(); }
 
