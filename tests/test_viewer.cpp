@@ -165,6 +165,41 @@ TEST_CASE("the texture inspector opens on a texture by script; an unknown textur
     CHECK(channel.err.find("channel rgba, r, g, b or a") != std::string::npos);
 }
 
+TEST_CASE("the texture inspector shows a 2D texture upright, with the mip levels GL generated for a PNG") {
+    // A tall 4x8 PNG: its first row red, its last row blue, green between (0 and 1 are exact in sRGB).
+    fxview::image::FloatImage picture(4, 8);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 4; ++x) {
+            float* p = picture.pixel(x, y);
+            p[0] = y == 0, p[1] = y > 0 && y < 7, p[2] = y == 7, p[3] = 1;
+        }
+    const std::string png = temp_path("inspector-rows.png"), script = temp_path("inspector-rows.txt");
+    fxview::image::write_png(png, picture, fxview::image::Encoding::Srgb);
+    std::ofstream(script) << "inspect-texture Checker\ninspect-texel 0.5 0.01\ninspect-texel 0.5 0.99\n"
+                             "inspect-texture Checker rgba 0 1\ninspect-texel 0.5 0.5\n";
+    const std::string textured = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/examples/textured.fx";
+    const Result r = run("view " + textured + " --set Checker=" + png + " --render-size 32x32 --script " + script + " --frames 2");
+    CAPTURE(r.err);
+    REQUIRE(r.exit_code == 0);
+    std::istringstream lines(r.out);
+    std::string top, bottom, level1;
+    std::getline(lines, top);
+    std::getline(lines, bottom);
+    std::getline(lines, level1);
+    const auto t = nlohmann::json::parse(top), b = nlohmann::json::parse(bottom), l = nlohmann::json::parse(level1);
+    // The preview's top shows the file's first row (red), which GL stores as its last row (7).
+    CHECK(t["texel"][1] == 7);
+    CHECK(t["value"] == nlohmann::json({1.0, 0.0, 0.0, 1.0}));
+    CHECK(b["texel"][1] == 0);
+    CHECK(b["value"] == nlohmann::json({0.0, 0.0, 1.0, 1.0}));
+    // One level in the file, 4 in GL (8, 4, 2, 1 rows): the mip slider has them.
+    CHECK(t["levels"] == 4);
+    CHECK(t["generated_levels"] == true);
+    CHECK(l["level"] == 1);
+    CHECK(l["texel"][1].get<int>() >= 0);
+    CHECK(l["texel"][1].get<int>() < 4);
+}
+
 TEST_CASE("view takes render's options: --size, --samples and --debug-view give render's image") {
     const std::string shot = temp_path("view-options.png"), rendered = temp_path("render-options.png");
     const std::string options = " --debug-view uv --size 64x48 --samples 4";

@@ -185,7 +185,10 @@ void EffectResources::add_texture(const std::string& name, TextureData data, boo
     gpu.format = data.format;
     gpu.width = data.width();
     gpu.height = data.height();
-    gpu.levels = data.levels();
+    GLint levels = 1;  // upload_texture generates a mip chain for single-level files
+    glGetTextureParameteriv(gpu.texture.get(), GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+    gpu.levels = std::max(1, static_cast<int>(levels));
+    gpu.generated_levels = gpu.levels > data.levels();
     gpu.source = data.source;
     textures_.emplace(name, std::move(gpu));
     cpu_copies_.emplace(name, std::move(data));

@@ -25,7 +25,8 @@ struct GpuTexture {
     gl::Texture texture;
     texture::TextureType type = texture::TextureType::Tex2D;
     texture::PixelFormat format = texture::PixelFormat::RGBA8;
-    int width = 0, height = 0, levels = 1;
+    int width = 0, height = 0, levels = 1;  // levels as stored in GL, generated ones included
+    bool generated_levels = false;          // the file had one level; GL made the others
     std::string source;  // file(s), or "render target"
 };
 

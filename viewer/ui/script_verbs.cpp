@@ -78,6 +78,7 @@ void Viewer::perform(const ScriptAction& action) {
         {"brdf-view", &Viewer::verb_brdf_view},
         {"brdf-keep", &Viewer::verb_brdf_keep},
         {"inspect-texture", &Viewer::verb_inspect_texture},
+        {"inspect-texel", &Viewer::verb_inspect_texel},
         {"open-error", &Viewer::verb_open_error},
         {"wait-effect", &Viewer::verb_wait_effect},
         {"plugin-start", &Viewer::verb_plugin_start},
@@ -227,9 +228,21 @@ void Viewer::verb_inspect_texture(const ScriptAction& a) {
         channel = static_cast<int>(std::find(std::begin(channels), std::end(channels), args[1]) - std::begin(channels));
         if (channel == 5) throw UsageError("inspect-texture: channel rgba, r, g, b or a");
     }
-    texture_panel_->inspect(args[0], channel, args.size() > 2 ? number(a, args[2]) : 0.0f);
+    texture_panel_->inspect(args[0], channel, args.size() > 2 ? number(a, args[2]) : 0.0f, args.size() > 3 ? whole_number(a, args[3]) : 0);
     requested_tab_ = "Textures";
-    wait_frames_ = 1;
+    wait_frames_ = 2;  // the tab opens, then the inspector draws its preview
+}
+
+// inspect-texel X Y: the texel the inspector shows at (X, Y), fractions of its preview from the top
+// left, as its tooltip gives it; prints JSON.
+void Viewer::verb_inspect_texel(const ScriptAction& a) {
+    const auto texel = texture_panel_->texel_at({number(a, a.arguments[0]), number(a, a.arguments[1])});
+    if (!texel) throw UsageError("inspect-texel: no texture shown there (open the inspector with inspect-texture first)");
+    std::cout << nlohmann::json{{"texel", {texel->x, texel->y}}, {"level", texel->level}, {"levels", texel->levels},
+                                {"generated_levels", texel->generated_levels},
+                                {"value", {texel->value.r, texel->value.g, texel->value.b, texel->value.a}}}
+                     .dump()
+              << std::endl;
 }
 
 void Viewer::verb_open_error(const ScriptAction& a) {

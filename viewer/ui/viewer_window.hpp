@@ -120,6 +120,7 @@ private:
     void verb_brdf_view(const ScriptAction& action);
     void verb_brdf_keep(const ScriptAction& action);
     void verb_inspect_texture(const ScriptAction& action);
+    void verb_inspect_texel(const ScriptAction& action);
     void verb_open_error(const ScriptAction& action);
     void verb_wait_effect(const ScriptAction& action);
     void verb_plugin_start(const ScriptAction& action);
