@@ -10,7 +10,7 @@ VIEWS = normals uv camera light
 
 FUZZ_SECONDS ?= 300
 
-.PHONY: deps build fuzz-build run test fuzz sanitize clean
+.PHONY: deps build fuzz-build run test sweep fuzz sanitize clean
 
 deps:
 	./scripts/install-deps.sh
@@ -63,6 +63,10 @@ fuzz-build: deps
 
 test: build fuzz-build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+# The full parameter sweep (make test runs a quick one per technique): scripts/sweep.sh.
+sweep: build
+	JOBS=$(JOBS) OUT=$(BUILD_DIR)/sweep ./scripts/sweep.sh $(FXVIEW)
 
 # A fuzzing campaign: every harness for FUZZ_SECONDS (default 300) on the corpora; findings go to
 # $(BUILD_DIR)/sanitize/fuzz-crashes.
