@@ -382,7 +382,12 @@ TEST_CASE("the BRDF tab plots a .brdf file and its check runs by script; an effe
     CHECK(views.exit_code == 0);
     for (const char* view : {"lobe", "slice", "sphere", "polar"}) CHECK(views.out.find("\"brdf_view\":\"" + std::string(view) + "\"") != std::string::npos);
     CHECK(views.out.find("white: f = 0.159") != std::string::npos);  // the slice of this Lambert: green 0.5 / pi everywhere
-    CHECK(views.out.find("{\"brdf_kept_curves\":2}") != std::string::npos);
+    const auto kept = views.out.substr(views.out.find("{\"brdf_kept_curves\":2"));
+    const auto labels = nlohmann::json::parse(kept.substr(0, kept.find('\n')))["labels"];
+    // Curves of one file tell apart: numbered, the second names the parameter that changed.
+    CHECK(labels[0].get<std::string>().rfind("#1 lambert.brdf", 0) == 0);
+    CHECK(labels[1].get<std::string>().find("#2 ") == 0);
+    CHECK(labels[1].get<std::string>().find("-> 0.3,0.3,0.3") != std::string::npos);
     // A measured table overlaid on the polar plot (a synthetic Lambertian MERL file); a missing file is named.
     const std::string merl = temp_path("tab-lambert.binary");
     REQUIRE(run("brdf-grid --model phong --param ks=0 --param kd=0.5,0.5,0.5 --merl-out --out " + merl).exit_code == 0);

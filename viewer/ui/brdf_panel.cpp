@@ -27,7 +27,7 @@ struct Curve {
 void draw_polar(const std::vector<Curve>& curves, float incidence, bool logarithmic, float height) {
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const float width = ImGui::GetContentRegionAvail().x;
-    ImGui::Dummy(ImVec2(width, height));
+    ImGui::Dummy(ImVec2(width, height + ImGui::GetTextLineHeight()));  // the scale below the horizon
     ImDrawList* list = ImGui::GetWindowDrawList();
     const float cx = origin.x + width * 0.5f, cy = origin.y + height - 6.0f, radius = std::max(10.0f, std::min(width * 0.5f - 6.0f, height - 12.0f));
     double peak = 0;
@@ -49,6 +49,16 @@ void draw_polar(const std::vector<Curve>& curves, float incidence, bool logarith
         for (int k = 0; k < 60; ++k) list->AddLine(point(-90.0 + 3.0 * k, r), point(-87.0 + 3.0 * k, r), grid);
     }
     for (int degrees = -90; degrees <= 90; degrees += 30) list->AddLine(ImVec2(cx, cy), point(degrees, radius), grid);
+    // The rings' values along the right-hand horizon: f in 1/sr (linear: quarters of the peak; log: decades).
+    const ImU32 scale = IM_COL32(150, 150, 150, 255);
+    for (int ring = 1; ring <= 4; ++ring) {
+        char value[32];
+        if (logarithmic) std::snprintf(value, sizeof value, "1e%+.0f", top - 4.0 + ring);
+        else std::snprintf(value, sizeof value, "%.3g", top * ring / 4.0);
+        const ImVec2 size = ImGui::CalcTextSize(value);
+        list->AddText(ImVec2(std::min(cx + radius * ring / 4.0f - size.x * 0.5f, origin.x + width - size.x), cy + 1.0f), scale, value);
+    }
+    list->AddText(ImVec2(origin.x, origin.y), scale, logarithmic ? "f (1/sr), log scale" : "f (1/sr)");
     list->AddLine(ImVec2(cx, cy), point(incidence, radius), light, 2.0f);
     for (const Curve& curve : curves)
         for (size_t k = 0; k + 1 < curve.values->size(); ++k) {
@@ -96,11 +106,42 @@ void BrdfPanel::update_plane(render::EffectSession& session) {
     }
 }
 
+namespace {
+
+std::string format_values(const std::vector<double>& values) {
+    std::string text;
+    for (const double v : values) {
+        char number[32];
+        std::snprintf(number, sizeof number, "%.4g", v);
+        text += (text.empty() ? "" : ",") + std::string(number);
+    }
+    return text;
+}
+
+}  // namespace
+
 void BrdfPanel::keep_curve(render::EffectSession& session) {
     update_plane(session);
-    char label[64];
-    std::snprintf(label, sizeof label, ", %s, theta_i %.0f deg", session.technique().c_str(), incidence_);
-    kept_.push_back({std::filesystem::path(session.effect().path).filename().string() + label, plane_});
+    char label[96];
+    std::snprintf(label, sizeof label, "#%zu %s, %s, θi %.0f°", kept_.size() + 1,
+                  std::filesystem::path(session.effect().path).filename().string().c_str(), session.technique().c_str(), incidence_);
+    std::string text = label;
+    if (!kept_.empty()) {  // what changed since the curve kept before, so that curves of one file tell apart
+        std::string changes;
+        for (const auto& [name, value] : session.values().numbers) {
+            const auto before = kept_.back().parameters.find(name);
+            if (before != kept_.back().parameters.end() && before->second != value)
+                changes += (changes.empty() ? "" : "; ") + name + " " + format_values(before->second) + " -> " + format_values(value);
+        }
+        if (!changes.empty()) text += ": " + changes;
+    }
+    kept_.push_back({text, plane_, session.values().numbers});
+}
+
+std::vector<std::string> BrdfPanel::kept_labels() const {
+    std::vector<std::string> labels;
+    for (const auto& k : kept_) labels.push_back(k.label);
+    return labels;
 }
 
 // The lobe, slice or sphere for the current values, redrawn when the view, a value or an angle changes.
@@ -210,7 +251,9 @@ void BrdfPanel::draw(render::EffectSession* session) {
         if (ImGui::Button("Keep curve")) keep_curve(*session);
         ImGui::SameLine();
         ImGui::TextDisabled("(to compare: change parameters or open another file)");
+        ImGui::PushTextWrapPos(0.0f);
         for (size_t k = 0; k < kept_.size(); ++k) ImGui::TextColored(to_vec4(kept_colour(k)), "%s", kept_[k].label.c_str());
+        ImGui::PopTextWrapPos();
         if (!kept_.empty() && ImGui::SmallButton("Clear kept curves")) kept_.clear();
     }
     ImGui::InputTextWithHint("##measured", "MERL .binary file to compare", measured_path_, sizeof measured_path_);

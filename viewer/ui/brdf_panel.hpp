@@ -28,6 +28,9 @@ public:
     // Keeps the current polar curve for comparison (the Keep curve button; the script verb brdf-keep).
     void keep_curve(render::EffectSession& session);
     size_t kept_curves() const { return kept_.size(); }
+    // Each kept curve's label: its number, file, technique and incidence, and what differs from the
+    // curve kept before it (the parameters changed, with their old and new values).
+    std::vector<std::string> kept_labels() const;
 
     enum class View { Polar, Lobe, Slice, Sphere };
     // The view shown (the View combo; the script verb brdf-view polar|lobe|slice|sphere), drawn at
@@ -38,6 +41,7 @@ private:
     struct KeptCurve {
         std::string label;
         std::vector<double> values;
+        std::map<std::string, std::vector<double>> parameters;  // the values it was kept with
     };
     void update_plane(render::EffectSession& session);
     void update_picture(render::EffectSession& session);

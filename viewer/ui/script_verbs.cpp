@@ -214,7 +214,7 @@ void Viewer::verb_brdf_view(const ScriptAction& a) {  // as the BRDF tab's View 
 void Viewer::verb_brdf_keep(const ScriptAction& a) {  // as the BRDF tab's Keep curve
     require_brdf_grid(session(), a.verb);
     brdf_panel_.keep_curve(*session());
-    std::cout << nlohmann::json{{"brdf_kept_curves", brdf_panel_.kept_curves()}}.dump() << std::endl;
+    std::cout << nlohmann::json{{"brdf_kept_curves", brdf_panel_.kept_curves()}, {"labels", brdf_panel_.kept_labels()}}.dump() << std::endl;
     requested_tab_ = "BRDF";
     wait_frames_ = 1;
 }
