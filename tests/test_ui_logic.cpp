@@ -12,6 +12,7 @@
 
 #include "ui/error_list.hpp"
 #include "ui/file_browser.hpp"
+#include "ui/light_marker.hpp"
 #include "ui/render_schedule.hpp"
 #include "ui/scene_layout.hpp"
 
@@ -208,4 +209,34 @@ TEST_CASE("an added object is placed right of the others, never inside one") {
     const glm::vec3 third = ui::place_beside(objects, glm::vec3(0.5f));
     CHECK(third.x == doctest::Approx(4.25f + 0.25f + 0.5f));
     for (const auto& o : objects) CHECK(std::abs(third.x - o.pose.position.x) >= ui::object_extent(o.scale) + 0.5f);
+}
+
+TEST_CASE("the light's marker: projected when in view, on the view's edge pointing to it otherwise") {
+    using fxview::ui::light_marker;
+    const fxview::scene::Camera camera;  // at distance 3 on +Z, looking at the origin
+    const glm::vec2 view(800.0f, 600.0f);
+    // At the target: the view's centre (exactly, up to float rounding of the projection).
+    const auto centre = light_marker(camera, glm::vec3(0.0f), view, 20.0f);
+    CHECK(centre.on_screen);
+    CHECK(centre.at.x == doctest::Approx(400.0f).epsilon(1e-5));
+    CHECK(centre.at.y == doctest::Approx(300.0f).epsilon(1e-5));
+    // The default light (2, 2, 3) lies in the camera's plane (z = 3): it never projects; the marker
+    // sits on the edge, up and to the right (screen y runs down), 20 px inside, at 45 degrees.
+    const auto side = light_marker(camera, fxview::scene::Light{}.world_position(), view, 20.0f);
+    CHECK_FALSE(side.on_screen);
+    CHECK_FALSE(side.behind);  // beside the camera, not behind it
+    CHECK(side.direction.x == doctest::Approx(std::sqrt(0.5f)));
+    CHECK(side.direction.y == doctest::Approx(-std::sqrt(0.5f)));
+    CHECK(side.at.y == doctest::Approx(20.0f));                  // the nearer edge (top: 280 px away) bounds it
+    CHECK(side.at.x == doctest::Approx(400.0f + 280.0f));        // 45 degrees: as far right as up
+    // In front but far outside the view to the left: the left edge, not behind.
+    const auto left = light_marker(camera, glm::vec3(-50.0f, 0.0f, 0.0f), view, 20.0f);
+    CHECK_FALSE(left.on_screen);
+    CHECK_FALSE(left.behind);
+    CHECK(left.at.x == doctest::Approx(20.0f));
+    CHECK(left.at.y == doctest::Approx(300.0f));
+    // Straight behind the camera: said so, on the bottom edge.
+    const auto behind = light_marker(camera, glm::vec3(0.0f, 0.0f, 10.0f), view, 20.0f);
+    CHECK(behind.behind);
+    CHECK(behind.at.y == doctest::Approx(580.0f));
 }

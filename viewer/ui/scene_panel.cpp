@@ -7,6 +7,7 @@
 #include "math/arcball.hpp"
 #include "math/transform.hpp"
 #include "scene/shapes.hpp"
+#include "ui/light_marker.hpp"
 #include "ui/scene_layout.hpp"
 
 namespace fxview::ui {
@@ -167,22 +168,30 @@ void draw_scene_panel(ViewerScene& view, const std::string& technique, bool has_
 
 void draw_light_gizmo(const ViewerScene& view, ImDrawList* list, ImVec2 origin, ImVec2 shown) {
     if (!view.show_light || shown.x <= 0 || shown.y <= 0) return;
-    const glm::mat4 camera = math::view_matrix(view.scene.camera.pose);
-    const glm::mat4 projection = math::perspective_matrix(view.scene.camera.fov_y_degrees, shown.x / shown.y, view.scene.camera.near_plane, view.scene.camera.far_plane);
-    const glm::vec4 clip = projection * camera * glm::vec4(view.scene.light.world_position(), 1.0f);
-    if (clip.w <= 0.0f) return;
-    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-    const ImVec2 at(origin.x + (ndc.x * 0.5f + 0.5f) * shown.x, origin.y + (0.5f - ndc.y * 0.5f) * shown.y);
     const float r = ImGui::GetFontSize() * 0.45f;
+    const LightMarker marker = light_marker(view.scene.camera, view.scene.light.world_position(), {shown.x, shown.y}, r * 3.0f);
+    const ImVec2 at(origin.x + marker.at.x, origin.y + marker.at.y);
     const ImU32 colour = view.selected == Target::Light ? IM_COL32(255, 220, 60, 255) : IM_COL32(255, 240, 180, 220);
     list->AddCircleFilled(at, r, colour);
     list->AddCircle(at, r, IM_COL32(0, 0, 0, 200), 0, 1.5f);
-    for (int i = 0; i < 8; ++i) {
-        const float angle = static_cast<float>(i) * 0.785398f;
-        const ImVec2 d(std::cos(angle), std::sin(angle));
-        list->AddLine(ImVec2(at.x + d.x * r * 1.4f, at.y + d.y * r * 1.4f), ImVec2(at.x + d.x * r * 2.0f, at.y + d.y * r * 2.0f), colour, 1.5f);
+    if (marker.on_screen) {
+        for (int i = 0; i < 8; ++i) {
+            const float angle = static_cast<float>(i) * 0.785398f;
+            const ImVec2 d(std::cos(angle), std::sin(angle));
+            list->AddLine(ImVec2(at.x + d.x * r * 1.4f, at.y + d.y * r * 1.4f), ImVec2(at.x + d.x * r * 2.0f, at.y + d.y * r * 2.0f), colour, 1.5f);
+        }
+        list->AddText(ImVec2(at.x + r * 2.2f, at.y - r), colour, "light");
+        return;
     }
-    list->AddText(ImVec2(at.x + r * 2.2f, at.y - r), colour, "light");
+    // An arrow from the sun towards the light, and where it is, on the side away from the edge.
+    const ImVec2 d(marker.direction.x, marker.direction.y), n(-d.y, d.x);
+    const ImVec2 tip(at.x + d.x * r * 2.6f, at.y + d.y * r * 2.6f), base(at.x + d.x * r * 1.4f, at.y + d.y * r * 1.4f);
+    list->AddTriangleFilled(tip, ImVec2(base.x + n.x * r * 0.8f, base.y + n.y * r * 0.8f), ImVec2(base.x - n.x * r * 0.8f, base.y - n.y * r * 0.8f), colour);
+    const char* label = marker.behind ? "light (behind the camera)" : "light (off screen)";
+    const ImVec2 size = ImGui::CalcTextSize(label);
+    const float x = std::clamp(at.x - d.x * r * 2.0f - size.x * 0.5f - d.x * size.x * 0.5f, origin.x + 2.0f, origin.x + shown.x - size.x - 2.0f);
+    const float y = std::clamp(at.y - d.y * r * 2.5f - size.y * 0.5f, origin.y + 2.0f, origin.y + shown.y - size.y - 2.0f);
+    list->AddText(ImVec2(x, y), colour, label);
 }
 
 std::optional<glm::vec2> ViewMouse::handle(ViewerScene& view, ImVec2 origin, ImVec2 size) {

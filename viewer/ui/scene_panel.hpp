@@ -50,7 +50,8 @@ struct ViewerScene {
 // The Scene tab. Added objects show `technique` (the effect's current one; empty without an effect).
 void draw_scene_panel(ViewerScene& view, const std::string& technique, bool has_effect, std::string& status);
 
-// The light as a small sun where it projects into the render view (not when behind the camera).
+// The light as a small sun where it projects into the render view; off screen (or behind the camera,
+// or in its plane) a sun with an arrow on the view's edge, pointing to it.
 void draw_light_gizmo(const ViewerScene& view, ImDrawList* list, ImVec2 origin, ImVec2 shown);
 
 // The mouse on the render view (the last ImGui item, shown at `origin` with size `size`): a left drag
