@@ -72,9 +72,10 @@ RenderSchedule::Work RenderSchedule::next(int width, int height) {
         if (rows == 1 && pixels > 2 * budget_pixels && width >= 32) next_column_ = 0;
         else return {0, next_row_, width, rows};
     }
-    // Column tiles of the row: the covered pixels are taken as spread evenly along it.
-    const double row_pixels = std::max(covered(next_row_), 1.0);
-    double wanted = std::clamp(width * budget_pixels / row_pixels, 16.0, static_cast<double>(width));
+    // Column tiles of the row: where along it the covered pixels lie is not known (a sphere's are
+    // all in the middle), so a tile is sized as if all its pixels were covered. Taking them as spread
+    // evenly made tiles over the object 2-3 times too costly (UI frames of 300 ms).
+    double wanted = std::clamp(budget_pixels, 16.0, static_cast<double>(width));
     wanted = std::min(wanted, std::max(16.0, allowed_columns_));
     const int columns = std::min(static_cast<int>(wanted), width - next_column_);
     return {next_column_, next_row_, columns, 1};
@@ -82,8 +83,11 @@ RenderSchedule::Work RenderSchedule::next(int width, int height) {
 
 void RenderSchedule::done(const Work& work, double seconds) {
     if (work.height <= 0) return;
-    double pixels = 0;
-    for (int r = work.y; r < work.y + work.height; ++r) pixels += covered(r, static_cast<double>(work.width) / std::max(width_, 1));
+    const bool tile = work.width < width_;
+    double pixels = 0;  // a tile: as next() sized it, every pixel covered
+    if (tile) pixels = std::min<double>(work.width, covered(work.y));
+    else
+        for (int r = work.y; r < work.y + work.height; ++r) pixels += covered(r);
     // The model follows the measurements, rising at once and falling by halves (a cheap piece must
     // not make the next one too large).
     if (work.width == width_) allowed_rows_ = follow(allowed_rows_, work.height, seconds, budget_used_, 1.0) + (seconds <= budget_used_ ? 1.0 : 0.0);
@@ -95,10 +99,13 @@ void RenderSchedule::done(const Work& work, double seconds) {
         if (seconds <= 2.0 * kMaxPieceSeconds) fixed_ = 0.5 * fixed_ + 0.5 * seconds;
     } else {
         const double measured = std::max(seconds - fixed_, 0.0) / pixels;
-        per_pixel_ = per_pixel_ > 0 ? std::max(measured, 0.5 * (per_pixel_ + measured)) : measured;
+        // A tile over the background is cheap without the object being so: tiles only raise the
+        // estimate, so that the tiles a row starts with cannot make the ones over the object too wide.
+        if (tile) per_pixel_ = std::max(per_pixel_, measured);
+        else per_pixel_ = per_pixel_ > 0 ? std::max(measured, 0.5 * (per_pixel_ + measured)) : measured;
     }
     picture_seconds_ += seconds;
-    if (work.width < width_) {  // a column tile
+    if (tile) {
         next_column_ = work.x + work.width;
         if (next_column_ < width_) return;
         next_column_ = 0;
