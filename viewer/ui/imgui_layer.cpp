@@ -19,9 +19,17 @@ namespace {
 // mathematical operators.
 const ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x206F, 0x2070, 0x209F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
 
+// Every key press, also those released before the next frame: Dear ImGui 1.86 (Debian 12) has no
+// input queue, so it only sees keys still down when a frame starts. ImGui's own callback, installed
+// after this one, calls it first.
+void record_key_press(GLFWwindow* window, int key, int, int action, int) {
+    if (action != GLFW_PRESS) return;
+    if (auto* layer = static_cast<ImGuiLayer*>(glfwGetWindowUserPointer(window))) layer->record_press(key);
+}
+
 }  // namespace
 
-ImGuiLayer::ImGuiLayer(GLFWwindow* window, float ui_scale) {
+ImGuiLayer::ImGuiLayer(GLFWwindow* window, float ui_scale) : window_(window) {
     IMGUI_CHECKVERSION();
     context_ = ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
@@ -40,6 +48,8 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window, float ui_scale) {
         io.Fonts->AddFontDefault(&config);
         font_fallback_ = true;
     }
+    glfwSetWindowUserPointer(window, this);
+    glfwSetKeyCallback(window, record_key_press);
     if (!ImGui_ImplGlfw_InitForOpenGL(window, true) || !ImGui_ImplOpenGL3_Init("#version 450 core")) {
         ImGui::DestroyContext(context_);
         throw Error("viewer: cannot initialise Dear ImGui");
@@ -48,7 +58,9 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window, float ui_scale) {
 
 ImGuiLayer::~ImGuiLayer() {
     ImGui_ImplOpenGL3_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
+    ImGui_ImplGlfw_Shutdown();  // puts record_key_press back
+    glfwSetKeyCallback(window_, nullptr);
+    glfwSetWindowUserPointer(window_, nullptr);
     ImGui::DestroyContext(context_);
 }
 

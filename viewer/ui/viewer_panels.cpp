@@ -35,10 +35,11 @@ void Viewer::draw_file_access() {
 }
 
 void Viewer::handle_keys() {
+    const std::vector<int> presses = imgui_->take_key_presses();  // taps shorter than a frame too
     if (ImGui::GetIO().WantCaptureKeyboard) return;
     const bool shift = ImGui::GetIO().KeyShift;
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space))) paused_ = !paused_;
-    const auto pressed = [](int key) { return ImGui::IsKeyPressed(key); };
+    const auto pressed = [&presses](int key) { return std::find(presses.begin(), presses.end(), key) != presses.end(); };
+    if (pressed(GLFW_KEY_SPACE)) paused_ = !paused_;
     if (pressed(GLFW_KEY_C)) view_.selected = Target::Camera;
     if (pressed(GLFW_KEY_L)) view_.selected = Target::Light;
     if (pressed(GLFW_KEY_O) && !view_.objects.empty()) view_.selected = Target::Object;
