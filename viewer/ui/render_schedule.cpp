@@ -28,9 +28,8 @@ void RenderSchedule::update(std::uint64_t key, bool animated, bool progressive) 
     }
 }
 
-double RenderSchedule::covered(int row, double fraction_of_width) const {
-    const double full = static_cast<size_t>(row) < coverage_.size() ? coverage_[static_cast<size_t>(row)] : width_;
-    return full * fraction_of_width;
+double RenderSchedule::covered(int row) const {
+    return static_cast<size_t>(row) < coverage_.size() ? coverage_[static_cast<size_t>(row)] : width_;
 }
 
 RenderSchedule::Work RenderSchedule::next(int width, int height) {
@@ -90,7 +89,7 @@ void RenderSchedule::done(const Work& work, double seconds) {
         for (int r = work.y; r < work.y + work.height; ++r) pixels += covered(r);
     // The model follows the measurements, rising at once and falling by halves (a cheap piece must
     // not make the next one too large).
-    if (work.width == width_) allowed_rows_ = follow(allowed_rows_, work.height, seconds, budget_used_, 1.0) + (seconds <= budget_used_ ? 1.0 : 0.0);
+    if (!tile) allowed_rows_ = follow(allowed_rows_, work.height, seconds, budget_used_, 1.0) + (seconds <= budget_used_ ? 1.0 : 0.0);
     else allowed_columns_ = follow(allowed_columns_, work.width, seconds, budget_used_, 16.0);
     if (pixels >= 1) allowed_pixels_ = follow(allowed_pixels_, pixels, seconds, budget_used_, 1.0);
     if (pixels < 1) {

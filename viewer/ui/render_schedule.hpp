@@ -64,7 +64,7 @@ public:
     int pictures() const { return pictures_; }                            // complete pictures drawn so far
 
 private:
-    double covered(int row, double fraction_of_width = 1.0) const;
+    double covered(int row) const;
     double predicted(double covered_pixels) const { return fixed_ + per_pixel_ * covered_pixels; }
 
     double budget_;

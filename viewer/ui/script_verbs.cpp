@@ -38,6 +38,10 @@ void require_brdf_grid(const render::EffectSession* session, const std::string& 
 
 }  // namespace
 
+std::string Viewer::shown_technique() const {
+    return view_.objects.empty() ? session()->technique() : view_.objects.front().technique;
+}
+
 void Viewer::run_script_step() {
     if (!picture_done()) return;  // actions see the picture their predecessors asked for
     if (wait_frames_ > 0) {
@@ -288,7 +292,7 @@ void Viewer::verb_plugin_wait(const ScriptAction&) {
     const int frames = frame_number_ - plugin_start_frame_;
     std::cout << nlohmann::json{{"plugin", {{"name", plugin_panel_.last_plugin()}, {"parameters", plugin_panel_.result()->parameters},
                                             {"converged", plugin_panel_.result()->converged}}},
-                                {"technique", view_.objects.empty() ? session()->technique() : view_.objects.front().technique},
+                                {"technique", shown_technique()},
                                 {"frames_while_running", frames}, {"seconds", seconds}}
                      .dump()
               << std::endl;
@@ -305,7 +309,7 @@ void Viewer::verb_plugin_run(const ScriptAction& a) {
     follow_plugin_technique();
     std::cout << nlohmann::json{{"plugin", {{"name", plugin_panel_.last_plugin()}, {"parameters", r.parameters},
                                             {"converged", r.converged}, {"warnings", r.warnings}}},
-                                {"technique", view_.objects.empty() ? session()->technique() : view_.objects.front().technique}}
+                                {"technique", shown_technique()}}
                      .dump()
               << std::endl;
 }

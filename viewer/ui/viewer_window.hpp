@@ -100,6 +100,7 @@ private:
     bool picture_done() const { return paused_ || !schedule_.pending(); }
     void run_script_step();
     void perform(const ScriptAction& action);  // one handler per verb, from a table
+    std::string shown_technique() const;       // the first object's, as plugin verbs report it
     // The verbs' handlers (script.hpp lists them).
     void verb_set(const ScriptAction& action);
     void verb_technique(const ScriptAction& action);
