@@ -8,7 +8,7 @@ packages=(
   libglfw3-dev libimgui-dev libglm-dev libstb-dev libeigen3-dev doctest-dev libcli11-dev
   libtinyobjloader-dev libtinyexr-dev nlohmann-json3-dev glslang-dev libspirv-cross-c-shared-dev
   libegl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6 libosmesa6-dev
-  libglx-mesa0 colord-data fonts-dejavu-core xvfb xauth
+  libglx-mesa0 colord-data fonts-dejavu-core xvfb xauth libxtst-dev
   clang libclang-rt-14-dev
 )
 

@@ -13,6 +13,7 @@
 #include "ui/error_list.hpp"
 #include "ui/file_browser.hpp"
 #include "ui/light_marker.hpp"
+#include "ui/panel_width.hpp"
 #include "ui/render_schedule.hpp"
 #include "ui/scene_layout.hpp"
 
@@ -269,4 +270,36 @@ TEST_CASE("the light's marker: projected when in view, on the view's edge pointi
     const auto behind = light_marker(camera, glm::vec3(0.0f, 0.0f, 10.0f), view, 20.0f);
     CHECK(behind.behind);
     CHECK(behind.at.y == doctest::Approx(580.0f));
+}
+
+TEST_CASE("the panel's width: the user's while the window has room, a share of a shrunk window, the user's again after") {
+    ui::PanelWidth panel;
+    panel.prefer(460);
+    // First frame at 1280: the preferred width (36 %) is given.
+    const auto first = panel.impose(1280);
+    REQUIRE(first);
+    CHECK(*first == doctest::Approx(460));
+    panel.shown(460);
+    // Frames without a change of the window impose nothing: the user may be dragging the edge.
+    CHECK_FALSE(panel.impose(1280));
+    panel.shown(460);
+    // The window shrinks to 640: 460 px would be 72 % of it; the panel takes 55 %.
+    const auto shrunk = panel.impose(640);
+    REQUIRE(shrunk);
+    CHECK(*shrunk == doctest::Approx(ui::PanelWidth::kMaxShare * 640));
+    panel.shown(*shrunk);
+    CHECK_FALSE(panel.impose(640));
+    panel.shown(*shrunk);
+    CHECK(panel.preferred() == doctest::Approx(460));  // an imposed width is not the user's choice
+    // Back at 1280: the user's 460 again.
+    const auto grown = panel.impose(1280);
+    REQUIRE(grown);
+    CHECK(*grown == doctest::Approx(460));
+    panel.shown(460);
+    // The user drags the edge to 520: that becomes the width to return to.
+    CHECK_FALSE(panel.impose(1280));
+    panel.shown(520);
+    CHECK(panel.preferred() == doctest::Approx(520));
+    CHECK(*panel.impose(1000) == doctest::Approx(520));  // 52 % of 1000: room enough
+    panel.shown(520);
 }

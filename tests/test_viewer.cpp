@@ -6,7 +6,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
+#include <cstdio>
 #include <fstream>
+#include <sys/wait.h>
 #include <thread>
 #include <set>
 #include <sstream>
@@ -14,6 +17,9 @@
 #include "image/image_file.hpp"
 #include "test_support.hpp"
 #include "texture/texture_file.hpp"
+#ifdef FXVIEW_HAVE_XTEST
+#include "x_input.hpp"
+#endif
 
 using fxview::test::Result;
 using fxview::test::run;
@@ -41,6 +47,15 @@ size_t distinct_colours(const fxview::texture::TextureData& t, int x0, int y0, i
             colours.insert(bytes[i] | bytes[i + 1] << 8 | bytes[i + 2] << 16);
         }
     return colours.size();
+}
+
+// The JSON lines a script printed, in order.
+std::vector<nlohmann::json> json_lines(const std::string& out) {
+    std::vector<nlohmann::json> lines;
+    std::istringstream in(out);
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty() && line.front() == '{') lines.push_back(nlohmann::json::parse(line));
+    return lines;
 }
 
 }  // namespace
@@ -432,3 +447,51 @@ TEST_CASE("the viewer lights and shows the environment as render does, through t
     REQUIRE(run("view " + effect + " --preset " + preset + " --size 64x64 --script " + script + " --frames 2").exit_code == 0);
     CHECK(texel(load_png(after), 2, 2)[1] > texel(view, 2, 2)[1] + 0.05f);
 }
+
+TEST_CASE("a large UI scale keeps the tabs' names whole; a shrunk window gets a share of the panel, its width comes back") {
+    const std::string script = temp_path("panel-script.txt");
+    std::ofstream(script) << "ui-state\nwindow 640 480\nui-state\nwindow 1280 800\nui-state\n";
+    const Result r = run("view " + kDebugFx + " --ui-scale 1.6 --window 1280x800 --script " + script + " --frames 1");
+    REQUIRE(r.exit_code == 0);
+    const auto states = json_lines(r.out);
+    REQUIRE(states.size() == 3);
+    const auto& wide = states[0], &narrow = states[1], &again = states[2];
+    CHECK(wide["window"] == nlohmann::json::array({1280, 800}));
+    // At 1.6 the seven tabs need more than the 45 % a panel usually takes (576 px): it is widened for them.
+    CHECK(wide["tab_bar_width"].get<double>() > 0.45 * 1280 - 40);
+    CHECK(wide["tabs_fit"] == true);
+    CHECK(wide["panel_width"].get<double>() <= 0.55 * 1280 + 0.5);
+    // 640 wide: the panel takes 55 % of the window (not its 1280-wide width, which would be 95 % of it).
+    CHECK(narrow["window"] == nlohmann::json::array({640, 480}));
+    CHECK(narrow["panel_width"].get<double>() == doctest::Approx(0.55 * 640).epsilon(0.01));
+    CHECK(again["panel_width"].get<double>() == doctest::Approx(wide["panel_width"].get<double>()));
+}
+
+#ifdef FXVIEW_HAVE_XTEST
+TEST_CASE("a key tap shorter than a frame reaches the viewer: H shows the key help") {
+    const std::string script = temp_path("tap-script.txt");
+    std::ofstream(script) << "ui-state\nwait-key H 60\nframes 2\nui-state\n";
+    // The viewer's output read as it comes: the tap is sent once the first state is printed, when the
+    // script is already waiting for the key (wait-key runs in the same frame).
+    const std::string command = std::string(FXVIEW_BINARY) + " view " + kDebugFx + " --window 640x480 --script " + script + " --frames 1";
+    FILE* viewer = popen(command.c_str(), "r");
+    REQUIRE(viewer != nullptr);
+    std::string out;
+    bool tapped = false;
+    std::array<char, 4096> line{};
+    while (std::fgets(line.data(), line.size(), viewer)) {
+        out += line.data();
+        // Press and release sent together: both arrive between two frames, as a quick tap does.
+        if (!tapped && std::string(line.data()).find("\"help\"") != std::string::npos)
+            tapped = fxview::test::tap_key_in_window("fxview", "h", 60);
+    }
+    const int status = pclose(viewer);
+    REQUIRE(tapped);
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 0);
+    const auto states = json_lines(out);
+    REQUIRE(states.size() == 2);
+    CHECK(states[0]["help"] == false);
+    CHECK(states[1]["help"] == true);
+}
+#endif

@@ -30,6 +30,8 @@ bool is_colour(const effect::Parameter& p) {
 // `--set X=#rrggbb`). A colour above 1 (where UIMax allows it) is shown as a colour times an
 // intensity: the swatch holds the colour scaled to a peak of 1.
 bool draw_colour(const effect::Parameter& p, const std::string& label, std::vector<float>& f) {
+    // Measured before the swatch: a width relative to the line's end (-FLT_MIN) shrinks after it.
+    const float numbers_width = std::max(ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - ImGui::GetStyle().ItemInnerSpacing.x, 40.0f);
     const float peak = std::max({1.0f, f[0], f[1], f[2]});
     float encoded[4] = {image::srgb_encode(f[0] / peak), image::srgb_encode(f[1] / peak), image::srgb_encode(f[2] / peak), f.size() > 3 ? f[3] : 1.0f};
     const ImGuiColorEditFlags flags = ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_NoLabel | ImGuiColorEditFlags_Uint8;
@@ -45,15 +47,28 @@ bool draw_colour(const effect::Parameter& p, const std::string& label, std::vect
     const float high = p.ui.max ? static_cast<float>(*p.ui.max) : 1.0f;
     const float low = p.ui.min ? static_cast<float>(*p.ui.min) : 0.0f;
     const float speed = p.ui.step ? static_cast<float>(*p.ui.step) : 0.005f;
-    ImGui::SetNextItemWidth(std::max(ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - ImGui::GetStyle().ItemInnerSpacing.x, 40.0f));
+    ImGui::SetNextItemWidth(numbers_width);
     changed = ImGui::DragScalarN(label.c_str(), ImGuiDataType_Float, f.data(), static_cast<int>(f.size()), speed, &low, &high, "%.4g",
                                  ImGuiSliderFlags_AlwaysClamp) || changed;
     return changed;
 }
 
-bool draw_value(const effect::Parameter& p, std::vector<double>& value) {
-    const std::string label = (p.ui.label.empty() ? p.name : p.ui.label) + (p.ui.unit.empty() ? "" : " [" + p.ui.unit + "]") +
-                              "##" + p.name;
+std::string label_of(const effect::Parameter& p) {
+    return (p.ui.label.empty() ? p.name : p.ui.label) + (p.ui.unit.empty() ? "" : " [" + p.ui.unit + "]");
+}
+
+// The width a row's widget needs to show its numbers whole (about "-0.0000" in every field, and the
+// swatch of a colour); 0 for widgets that need no particular width.
+float width_for_numbers(const effect::Parameter& p, int components) {
+    if (p.type == "bool" || components < 2 || components > 4) return 0;
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float field = ImGui::CalcTextSize("-0.0000").x + 2 * style.FramePadding.x;
+    float width = components * field + (components - 1) * style.ItemInnerSpacing.x;
+    if (is_colour(p)) width += ImGui::GetFrameHeight() + style.ItemInnerSpacing.x;
+    return width;
+}
+
+bool draw_widget(const effect::Parameter& p, const std::string& label, std::vector<double>& value) {
     std::vector<float> f(value.begin(), value.end());
     std::vector<int> i(value.begin(), value.end());
     bool changed = false;
@@ -108,8 +123,16 @@ bool draw_value(const effect::Parameter& p, std::vector<double>& value) {
     return changed;
 }
 
-std::string label_of(const effect::Parameter& p) {
-    return (p.ui.label.empty() ? p.name : p.ui.label) + (p.ui.unit.empty() ? "" : " [" + p.ui.unit + "]");
+// The label right of the widget; on a line of its own above a widget of the whole width when the
+// widget would cut its numbers (a narrow panel, a large UI scale).
+bool draw_value(const effect::Parameter& p, std::vector<double>& value) {
+    const std::string label = label_of(p);
+    if (ImGui::CalcItemWidth() >= width_for_numbers(p, effect::component_count(p.type))) return draw_widget(p, label + "##" + p.name, value);
+    ImGui::TextUnformatted(label.c_str());
+    ImGui::PushItemWidth(-FLT_MIN);
+    const bool changed = draw_widget(p, "##" + p.name, value);
+    ImGui::PopItemWidth();
+    return changed;
 }
 
 // Parameters a plugin of the effect reads (named in its annotations): they matter even when no shader
@@ -177,7 +200,8 @@ bool draw_groups(const effect::Effect& effect, effect::ParameterValues& values, 
     bool open = true;
     // Widgets leave room for the longest label (up to 60 % of the panel), so labels are not cut.
     float label_width = 0;
-    for (const effect::Parameter* p : rows) label_width = std::max(label_width, ImGui::CalcTextSize(label_of(*p).c_str()).x);
+    for (const effect::Parameter* p : rows)  // (a checkbox's label follows its box: no room to keep)
+        if (p->type != "bool") label_width = std::max(label_width, ImGui::CalcTextSize(label_of(*p).c_str()).x);
     const float available = ImGui::GetContentRegionAvail().x;
     // (At least 30 % for the widget: a panel too narrow for a label clips it; its tooltip has it whole.)
     const float item_width = std::max(available * 0.3f, available - label_width - ImGui::GetFrameHeight() - 3 * ImGui::GetStyle().ItemSpacing.x);

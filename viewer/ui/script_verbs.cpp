@@ -1,9 +1,13 @@
 // The viewer's script verbs (`view --script`, docs/cli.md): a table from verb to a small handler,
 // each doing what the matching button or key does. script.cpp checks the verbs' argument counts.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
+#include <chrono>
 #include <iostream>
 #include <map>
 #include <set>
@@ -44,6 +48,12 @@ std::string Viewer::shown_technique() const {
 
 void Viewer::run_script_step() {
     if (!picture_done()) return;  // actions see the picture their predecessors asked for
+    if (awaited_key_ != 0) {
+        if (std::chrono::steady_clock::now() < key_deadline_) return;
+        std::cerr << "fxview: script: wait-key: no key " << awaited_key_name_ << " pressed in time\n";
+        awaited_key_ = 0;
+        exit_code_ = 1;
+    }
     if (wait_frames_ > 0) {
         --wait_frames_;
         return;
@@ -91,6 +101,9 @@ void Viewer::perform(const ScriptAction& action) {
         {"fit", &Viewer::verb_plugin_run},
         {"allow-path", &Viewer::verb_allow_path},
         {"frames", &Viewer::verb_frames},
+        {"window", &Viewer::verb_window},
+        {"ui-state", &Viewer::verb_ui_state},
+        {"wait-key", &Viewer::verb_wait_key},
     };
     const auto found = handlers.find(action.verb);
     if (found == handlers.end()) throw UsageError("unknown script action '" + action.verb + "'");
@@ -172,8 +185,8 @@ void Viewer::verb_skybox(const ScriptAction& a) {
 }
 
 void Viewer::verb_tab(const ScriptAction& a) {
-    static const std::set<std::string> tabs = {"Effect", "Scene", "Textures", "Pick", "View", "Plugins", "BRDF"};
-    if (!tabs.count(a.arguments[0])) throw UsageError("no tab '" + a.arguments[0] + "' (Effect, Scene, Textures, Pick, View, Plugins, BRDF)");
+    if (std::none_of(std::begin(kTabNames), std::end(kTabNames), [&a](const char* name) { return a.arguments[0] == name; }))
+        throw UsageError("no tab '" + a.arguments[0] + "' (Effect, Scene, Textures, Pick, View, Plugins, BRDF)");
     requested_tab_ = a.arguments[0];
     wait_frames_ = 1;
 }
@@ -321,5 +334,46 @@ void Viewer::verb_allow_path(const ScriptAction& a) {
 }
 
 void Viewer::verb_frames(const ScriptAction& a) { wait_frames_ = std::max(0, whole_number(a, a.arguments[0])); }
+
+void Viewer::verb_window(const ScriptAction& a) {
+    const int width = whole_number(a, a.arguments[0]), height = whole_number(a, a.arguments[1]);
+    if (width < 200 || height < 150 || width > 16384 || height > 16384)
+        throw UsageError("window: " + a.arguments[0] + "x" + a.arguments[1] + " is outside 200x150 to 16384x16384");
+    glfwSetWindowSize(window_, width, height);
+    wait_frames_ = 3;  // the window system's resize arrives as an event
+}
+
+void Viewer::verb_ui_state(const ScriptAction&) {
+    int width = 0, height = 0;
+    glfwGetWindowSize(window_, &width, &height);
+    std::cout << nlohmann::json{{"window", {width, height}}, {"ui_scale", imgui_->scale()}, {"panel_width", panel_shown_width_},
+                                {"panel_preferred_width", panel_width_.preferred()}, {"tab_bar_width", tab_bar_width_}, {"tabs_fit", tabs_fit_},
+                                {"help", show_help_}}
+                     .dump()
+              << std::endl;
+}
+
+// `wait-key KEY [SECONDS]`: the script waits until the viewer has acted on a press of KEY (a letter,
+// a digit, F1-F12, space or tab), at most SECONDS (default 30); then it goes on, with exit code 1
+// when no press came.
+void Viewer::verb_wait_key(const ScriptAction& a) {
+    std::string name = a.arguments[0];
+    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    int key = 0;
+    if (name.size() == 1 && std::isalnum(static_cast<unsigned char>(name[0])))
+        key = std::isalpha(static_cast<unsigned char>(name[0])) ? GLFW_KEY_A + (name[0] - 'A') : GLFW_KEY_0 + (name[0] - '0');
+    else if (name == "SPACE") key = GLFW_KEY_SPACE;
+    else if (name == "TAB") key = GLFW_KEY_TAB;
+    else if (name.size() >= 2 && name[0] == 'F' && name.find_first_not_of("0123456789", 1) == std::string::npos) {
+        const int n = std::stoi(name.substr(1));
+        if (n >= 1 && n <= 12) key = GLFW_KEY_F1 + n - 1;
+    }
+    if (key == 0) throw UsageError("wait-key: unknown key '" + a.arguments[0] + "' (a letter, a digit, F1-F12, space or tab)");
+    const float seconds = a.arguments.size() > 1 ? number(a, a.arguments[1]) : 30.0f;
+    if (!(seconds > 0 && seconds <= 3600)) throw UsageError("wait-key: the time is in seconds, 0 to 3600");
+    awaited_key_ = key;
+    awaited_key_name_ = a.arguments[0];
+    key_deadline_ = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<float>(seconds));
+}
 
 }  // namespace fxview::ui

@@ -102,7 +102,7 @@ int Viewer::run() {
         frame();
         ++frame_number_;
         ui_frame_seconds_.push_back(frame_seconds_);
-        if (options_.frames > 0 && frame_number_ >= options_.frames && script_position_ >= script_.size() && picture_done()) break;
+        if (options_.frames > 0 && frame_number_ >= options_.frames && script_position_ >= script_.size() && awaited_key_ == 0 && picture_done()) break;
     }
     if (options_.stats) print_stats();
     return exit_code_;

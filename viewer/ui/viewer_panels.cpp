@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -37,6 +38,7 @@ void Viewer::draw_file_access() {
 void Viewer::handle_keys() {
     const std::vector<int> presses = imgui_->take_key_presses();  // taps shorter than a frame too
     if (ImGui::GetIO().WantCaptureKeyboard) return;
+    if (awaited_key_ != 0 && std::find(presses.begin(), presses.end(), awaited_key_) != presses.end()) awaited_key_ = 0;  // wait-key
     const bool shift = ImGui::GetIO().KeyShift;
     const auto pressed = [&presses](int key) { return std::find(presses.begin(), presses.end(), key) != presses.end(); };
     if (pressed(GLFW_KEY_SPACE)) paused_ = !paused_;
@@ -86,14 +88,34 @@ ImGuiTabItemFlags Viewer::tab_flags(const char* name) {
 }
 
 void Viewer::draw_ui(int window_width, int window_height) {
-    // The panel is as wide as the user drags its right edge (labels need room), the full height.
+    // The panel is as wide as the user drags its right edge (first as wide as its widgets and tabs
+    // need), a share of a window too small for that (panel_width.hpp), the full height.
     const float height = static_cast<float>(window_height), scale = imgui_->scale();
+    const ImGuiStyle& style = ImGui::GetStyle();
+    tab_bar_width_ = -style.ItemInnerSpacing.x;
+    for (const char* name : kTabNames)  // as ImGui sizes a tab without a close button (TabItemCalcSize)
+        tab_bar_width_ += ImGui::CalcTextSize(name).x + 2 * style.FramePadding.x + 1.0f + style.ItemInnerSpacing.x;
+    if (!panel_width_.has_preferred()) {
+        const float widgets = std::min(460.0f * scale, window_width * 0.45f);
+        const float tabs = std::min(std::ceil(tab_bar_width_ + 2 * (style.WindowPadding.x + style.WindowBorderSize) + style.ScrollbarSize),
+                                    window_width * PanelWidth::kMaxShare);
+        panel_width_.prefer(std::max(widgets, tabs));
+    }
     ImGui::SetNextWindowPos(ImVec2(0, 0));
-    ImGui::SetNextWindowSize(ImVec2(std::min(460.0f * scale, window_width * 0.45f), height), ImGuiCond_FirstUseEver);
+    if (const auto width = panel_width_.impose(static_cast<float>(window_width))) ImGui::SetNextWindowSize(ImVec2(*width, height));
     ImGui::SetNextWindowSizeConstraints(ImVec2(std::min(240.0f * scale, window_width * 0.5f), height),
                                         ImVec2(std::max(240.0f * scale, window_width * 0.8f), height));
     ImGui::Begin("fxview", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
     const float panel_width = ImGui::GetWindowWidth();
+    panel_width_.shown(panel_width);
+    panel_shown_width_ = panel_width;
+    // Widgets leave room for the longest label of the fixed panels (Scene, View, Textures), so that
+    // labels are not cut; the parameter list sizes its own (parameter_panel.cpp).
+    float label_width = 0;
+    for (const char* label : {"camera distance", "sun temperature", "light position", "file (.png/.exr)", "screenshot size", "exposure (EV)"})
+        label_width = std::max(label_width, ImGui::CalcTextSize(label).x);
+    const float content_width = ImGui::GetContentRegionAvail().x;
+    ImGui::PushItemWidth(std::max(content_width * 0.45f, content_width - label_width - style.ItemInnerSpacing.x - style.ScrollbarSize));
     ImGui::Text("%.1f FPS  frame %.1f ms  picture %.1f ms%s", frame_seconds_ > 0 ? 1.0 / frame_seconds_ : 0.0, frame_seconds_ * 1e3,
                 schedule_.last_picture_seconds() * 1e3, paused_ ? "  (paused)" : "");
     if (ImGui::IsItemHovered())
@@ -110,7 +132,9 @@ void Viewer::draw_ui(int window_width, int window_height) {
     }
     if (imgui_->font_fallback())
         ImGui::TextDisabled("UI font %s missing (fonts-dejavu-core): Greek letters show as '?'", FXVIEW_UI_FONT);
-    if (ImGui::BeginTabBar("tabs")) {
+    tabs_fit_ = ImGui::GetContentRegionAvail().x >= tab_bar_width_;
+    // Tabs keep their whole names; a panel too narrow for all of them scrolls the tab bar.
+    if (ImGui::BeginTabBar("tabs", ImGuiTabBarFlags_FittingPolicyScroll)) {
         if (ImGui::BeginTabItem("Effect", nullptr, tab_flags("Effect"))) {
             draw_effect_tab();
             ImGui::EndTabItem();
@@ -148,6 +172,7 @@ void Viewer::draw_ui(int window_width, int window_height) {
         ImGui::TextWrapped("%s", status_.c_str());
         ImGui::PopStyleColor();
     }
+    ImGui::PopItemWidth();
     ImGui::End();
 
     ImGui::SetNextWindowPos(ImVec2(panel_width, 0));

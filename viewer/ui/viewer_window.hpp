@@ -20,6 +20,7 @@
 #include "ui/environment_panel.hpp"
 #include "ui/file_browser.hpp"
 #include "ui/imgui_layer.hpp"
+#include "ui/panel_width.hpp"
 #include "ui/pick_panel.hpp"
 #include "ui/plugin_panel.hpp"
 #include "ui/render_schedule.hpp"
@@ -31,6 +32,9 @@
 struct GLFWwindow;
 
 namespace fxview::ui {
+
+// The panel's tabs, in order (`tab NAME` takes these names).
+inline constexpr const char* kTabNames[] = {"Effect", "Scene", "Textures", "Pick", "View", "Plugins", "BRDF"};
 
 class Viewer {
 public:
@@ -129,6 +133,9 @@ private:
     void verb_plugin_run(const ScriptAction& action);
     void verb_allow_path(const ScriptAction& action);
     void verb_frames(const ScriptAction& action);
+    void verb_window(const ScriptAction& action);
+    void verb_ui_state(const ScriptAction& action);
+    void verb_wait_key(const ScriptAction& action);
 
     ViewerOptions options_;
     std::unique_ptr<context::Context> context_;
@@ -165,6 +172,9 @@ private:
     int plugin_start_frame_ = 0;  // plugin-start: frames drawn while the plugin runs
     std::chrono::steady_clock::time_point plugin_start_time_, wait_started_;
     std::string requested_tab_;
+    PanelWidth panel_width_;
+    float tab_bar_width_ = 0, panel_shown_width_ = 0;  // the tabs' width with their whole names
+    bool tabs_fit_ = true;     // the panel shows every tab whole
     std::vector<std::string> pending_window_shots_;
     FileBrowser file_browser_{FXVIEW_SOURCE_EFFECTS_DIR};
     char preset_input_[512] = "preset.json",
@@ -173,6 +183,9 @@ private:
     std::vector<ScriptAction> script_;
     size_t script_position_ = 0;
     int wait_frames_ = 0;
+    int awaited_key_ = 0;  // wait-key: the GLFW key the script waits for, until key_deadline_
+    std::string awaited_key_name_;
+    std::chrono::steady_clock::time_point key_deadline_;
     int awake_frames_ = 3;  // frames to draw before the loop may sleep (wait_or_poll_events)
 };
 
