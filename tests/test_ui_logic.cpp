@@ -32,6 +32,7 @@ struct Simulation {
     std::vector<double> coverage = std::vector<double>(120, 0.0);
     std::vector<double> piece_seconds;
     bool centred = false;  // a row's covered pixels in one run in its middle (a sphere), not spread evenly
+    int blocks_cut = 0;
 
     Simulation() {
         for (int y = 40; y < 80; ++y) coverage[static_cast<size_t>(y)] = 150;
@@ -54,6 +55,13 @@ struct Simulation {
         for (int frame = 0; frame < 100000 && (schedule.update(key, false, true), schedule.pending()); ++frame) {
             const ui::RenderSchedule::Work w = schedule.next(width, height);
             REQUIRE(w.height > 0);
+            // Whole 4x4 blocks of GL's framebuffer (rows counted from its bottom): only the top band
+            // and the last column tile may be cut by the picture's edge.
+            CHECK((height - w.y - w.height) % ui::RenderSchedule::kBlock == 0);
+            CHECK((w.y == 0 || (height - w.y) % ui::RenderSchedule::kBlock == 0));
+            CHECK(w.x % ui::RenderSchedule::kBlock == 0);
+            CHECK((w.x + w.width == width || w.width % ui::RenderSchedule::kBlock == 0));
+            blocks_cut += (height - w.y) % ui::RenderSchedule::kBlock != 0 && w.y != 0;
             for (int y = w.y; y < w.y + w.height; ++y)
                 for (int x = w.x; x < w.x + w.width; ++x) ++drawn[static_cast<size_t>(y * width + x)];
             piece_seconds.push_back(cost(w));
@@ -88,6 +96,22 @@ TEST_CASE("a slow picture is drawn in pieces that tile it once, each near the bu
     CHECK(over <= 2);  // the model's first measurements of the object
 }
 
+TEST_CASE("pieces are bands and tiles of whole 4x4 blocks from the picture's bottom, also when its height is not a multiple of 4") {
+    // llvmpipe shades 4x4 blocks: a one-row piece pays for four rows (MultiLayer, 16 layers: 16 s
+    // whole, 92 s in one-row pieces).
+    for (const int height : {120, 122, 123}) {
+        CAPTURE(height);
+        Simulation s;
+        s.height = height;
+        s.coverage.resize(static_cast<size_t>(height), 0.0);
+        s.per_pixel = 5e-4;  // column tiles too
+        ui::RenderSchedule schedule(0.01);
+        s.run(schedule, 1);
+        CHECK(schedule.pictures() == 1);
+        CHECK(s.blocks_cut == 0);
+    }
+}
+
 TEST_CASE("pieces stay bounded by measured time when the model misjudges the picture") {
     // Issue 27: one piece once held the rest of a 27-second picture. A disc of a heavy shader (0.2 ms a
     // pixel: a middle row costs 60 ms) under a 10 ms budget, with the cost model misled twice: empty
@@ -117,14 +141,15 @@ TEST_CASE("pieces stay bounded by measured time when the model misjudges the pic
             CHECK(worst <= 2 * piece_budget);
             continue;
         }
-        // Blind, rows double while they keep to the budget: the piece that first meets the disc may
-        // overrun (it holds rows the background made look cheap), but never the rest of the picture,
-        // and after it the measured overrun scales the pieces back to at most two rows of the disc
-        // (one costs 60 ms: whole rows are the least a blind piece can be).
+        // Blind, bands grow while they keep to the budget: the piece that first meets the disc may
+        // overrun (it holds rows the background made look cheap), but never the rest of the picture;
+        // its overrun shows the estimate wrong, every pixel then counts as covered and the pieces
+        // become tiles near the budget (measured here: 61 ms at most; 130 ms when the schedule kept
+        // whole rows of the disc, the least a blind piece could be before).
         CHECK(worst < 0.2 * total);
         size_t after_overrun = 0;
         while (after_overrun < disc.piece_seconds.size() && disc.piece_seconds[after_overrun] < 0.14) ++after_overrun;
-        for (size_t i = after_overrun + 1; i < disc.piece_seconds.size(); ++i) CHECK(disc.piece_seconds[i] <= 0.14);
+        for (size_t i = after_overrun + 1; i < disc.piece_seconds.size(); ++i) CHECK(disc.piece_seconds[i] <= 2.5 * piece_budget);
     }
 }
 

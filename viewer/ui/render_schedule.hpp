@@ -3,8 +3,8 @@
 // UI frames when it is slow (a progressive render: the new picture sweeps down over the old one, and
 // the UI keeps its frame rate and its input). The pieces are sized from a cost model: a fixed cost
 // per piece plus a cost per pixel the objects cover (where the fragment shader runs; background
-// pixels are only cleared), measured as pieces complete; a row too costly for one frame is split
-// into column tiles.
+// pixels are only cleared), measured as pieces complete; a band of rows too costly for one frame is
+// split into column tiles.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -36,6 +36,10 @@ private:
 
 class RenderSchedule {
 public:
+    // Pieces are made of blocks of kBlock x kBlock pixels, aligned to the picture's bottom left (GL's
+    // origin): a rasteriser shades whole blocks (llvmpipe 4x4), so a piece of one row pays for four.
+    static constexpr int kBlock = 4;
+
     explicit RenderSchedule(double budget_seconds = 0.014) : budget_(budget_seconds) {}
 
     // Called once per UI frame with a hash of everything the picture depends on; a different hash
@@ -65,6 +69,8 @@ public:
 
 private:
     double covered(int row) const;
+    double covered_rows(int first, int end) const;
+    int band_end(int row) const;  // the row after the band of whole blocks that `row` starts
     double predicted(double covered_pixels) const { return fixed_ + per_pixel_ * covered_pixels; }
 
     double budget_;
