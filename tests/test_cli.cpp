@@ -600,7 +600,7 @@ nlohmann::json brdf_check(const std::string& file, const std::string& sets = "")
 
 // GGX with height-correlated Smith masking and F = 1, in double: the test's own copy of the
 // formula, integrated by a different rule (midpoints in θo and φo, 600 x 600) than brdf-check's
-// equal-solid-angle grid on the GPU.
+// importance-sampled grids on the GPU.
 double ggx_albedo(double incidence_deg, double alpha) {
     const double pi = std::numbers::pi, t = incidence_deg * pi / 180.0;
     const double lx = std::sin(t), lz = std::cos(t);
@@ -623,8 +623,9 @@ double ggx_albedo(double incidence_deg, double alpha) {
 }  // namespace
 
 TEST_CASE("brdf-check: albedo, reciprocity and energy against known answers") {
-    // Lambert reflects its reflectance at every incidence; the equal-solid-angle grid integrates the
-    // linear cos θo exactly, so only float rounding is left.
+    // Lambert reflects its reflectance at every incidence (and azimuth). brdf-check's sampling
+    // integrates it to 1e-4 (the power heuristic's weights on 64² midpoints a strategy: measured
+    // 3e-5 to 9e-5 in test_brdf_check).
     const auto lambert = brdf_check("lambert.brdf");
     for (const auto& row : lambert["albedo"]) {
         CHECK(row["rgb"][0].get<double>() == doctest::Approx(0.8).epsilon(1e-4));
@@ -694,6 +695,22 @@ TEST_CASE("brdf-check: albedo, reciprocity and energy against known answers") {
     // specular term divides by max(n·l, n·v)): what is left is float rounding at grazing angles
     // (measured 6e-5), far below the 1 (order of magnitude) of a real asymmetry like not_reciprocal.brdf.
     CHECK(shipped("-t AshikhminShirley")["reciprocity_max_relative"].get<double>() < 1e-3);
+    // Issue 28's edges through the GPU: a lobe 0.3° wide of albedo 0.9 conserves energy (the old
+    // 256² grid said 1.187); a lobe that reflects 1.02 at 89° only is flagged there (the old grid:
+    // 0.994); an asymmetry that vanishes when the light is in the tangent's plane is found at
+    // another azimuth of incidence, and missed when only φi = 0 is checked.
+    const auto sharp = brdf_check("sharp_lobe.brdf");
+    CHECK(sharp["energy"] == "conserves");
+    // The GPU's float D of a 0.3° lobe: 1.2e-3 above the double truth 0.89998 (measured 0.9012).
+    CHECK(sharp["albedo"][0]["rgb"][0].get<double>() == doctest::Approx(0.9).epsilon(3e-3));
+    const auto grazing = brdf_check("grazing_gain.brdf");
+    CHECK(grazing["energy"] == "violates");
+    CHECK(grazing["max_albedo_incidence_deg"] == 89.0);
+    // 0.5 + 0.743 x 0.69988 (the mirror share at 89°, computed by the test's own 1D quadrature).
+    CHECK(grazing["max_albedo"].get<double>() == doctest::Approx(1.0200).epsilon(2e-3));
+    CHECK(brdf_check("skewed_reciprocity.brdf")["reciprocal"] == false);
+    CHECK(brdf_check("skewed_reciprocity.brdf", "--phi-i 0")["reciprocal"] == true);
+    CHECK(run("brdf-check " + std::string(FXVIEW_TEST_EFFECTS) + "/brdf/lambert.brdf --phi-i 400").exit_code == 2);
     // An effect without the grid technique is refused with a usage error.
     CHECK(run("brdf-check " + std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/debug.fx").exit_code == 2);
 }

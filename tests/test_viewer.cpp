@@ -390,6 +390,9 @@ TEST_CASE("the BRDF tab plots a .brdf file and its check runs by script; an effe
     // Lambert's albedo is its largest reflectance, 0.8 (as brdf-check on the command line).
     CHECK(check["max_albedo"].get<double>() == doctest::Approx(0.8).epsilon(1e-4));
     CHECK(check["conserves_energy"] == true);
+    CHECK(check["energy"] == "conserves");
+    // The check's 96 renders are spread over UI frames (about 30 ms of them a frame), not one long frame.
+    CHECK(nlohmann::json::parse(line.substr(0, line.find('\n')))["frames_while_checking"].get<int>() > 3);
     // Every view draws, and kept curves accumulate across parameter changes for the overlay.
     std::ofstream(script) << "brdf-view lobe\nbrdf-view slice\nbrdf-view sphere\nbrdf-view polar\nbrdf-keep\nset reflectance 0.3,0.3,0.3\nbrdf-keep\nframes 2\n";
     const Result views = run("view " + lambert + " --render-size 32x32 --script " + script + " --frames 2");

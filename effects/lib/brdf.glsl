@@ -56,7 +56,9 @@ float schlick_ggx(float x, float roughness) {
     return x / (x * (1.0 - k) + k);
 }
 float v_cavity(Frame f) { return min(1.0, min(2.0 * f.nh * f.nv / f.vh, 2.0 * f.nh * f.nl / f.vh)); }
-vec3 fresnel_schlick(vec3 f0, float c) { return f0 + (1.0 - f0) * pow(1.0 - c, 5.0); }
+// c clamped: a float v·h of a light beside the eye reaches 1.0000001, and GLSL's pow of a negative
+// base is undefined (NaN on llvmpipe: brdf-check found it at θi 1°).
+vec3 fresnel_schlick(vec3 f0, float c) { return f0 + (1.0 - f0) * pow(clamp(1.0 - c, 0.0, 1.0), 5.0); }
 float fresnel_full(float eta, float c) {
     float g2 = eta * eta + c * c - 1.0;
     if (g2 < 0.0) return 1.0;
@@ -81,7 +83,9 @@ vec3 ashikhmin_shirley(Frame f, vec3 rd, vec3 rs, float nu, float nv) {
     vec3 diffuse = 28.0 / (23.0 * kPi) * rd * (1.0 - rs) * (1.0 - pow(1.0 - f.nl / 2.0, 5.0)) * (1.0 - pow(1.0 - f.nv / 2.0, 5.0));
     float hu = dot(f.h, f.t), hv = dot(f.h, cross(f.n, f.t));
     float tangential = hu * hu + hv * hv;
-    float exponent = tangential > 0.0 ? (nu * hu * hu + nv * hv * hv) / tangential : 0.0;
+    // h along n: the azimuth is undefined, and so is the exponent (0/0; a float denormal may pass a
+    // test against 0): the mean of the two.
+    float exponent = tangential > 1e-20 ? (nu * hu * hu + nv * hv * hv) / tangential : 0.5 * (nu + nv);
     float lobe = sqrt((nu + 1.0) * (nv + 1.0)) / (8.0 * kPi) * pow(f.nh, exponent) / (f.vh * max(f.nl, f.nv));
     return diffuse + lobe * fresnel_schlick(rs, f.vh);
 }

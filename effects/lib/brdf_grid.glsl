@@ -14,7 +14,7 @@ uniform bool FxSwapArguments < string UIName = "Swap L and V"; string UIGroup = 
                                string UIHelp = "Evaluate f(V, L) instead of f(L, V) (reciprocity check)"; > = false;
 // Mode 1 (`fxview brdf-plot --view polar`): one row across the plane of incidence instead, θo from
 // -90° (mirror side) to 90° (the light's side) over the target's width, for θi = FxIncidence.
-uniform int FxGridMode < string UIName = "Grid layout"; string UIWidget = "combo"; string UIItems = "incidence tiles|plane of incidence|half-difference slice|hemisphere";
+uniform int FxGridMode < string UIName = "Grid layout"; string UIWidget = "combo"; string UIItems = "incidence tiles|plane of incidence|half-difference slice|hemisphere|sampled directions";
                          string UIGroup = "BRDF grid"; > = 0;
 uniform float FxIncidence < string UIName = "Incidence (plane)"; float UIMin = 0; float UIMax = 89; string UIUnits = "deg";
                             string UIGroup = "BRDF grid"; > = 30.0;
@@ -23,6 +23,42 @@ uniform float FxIncidence < string UIName = "Incidence (plane)"; float UIMin = 0
 // θi = FxIncidence, φo along x (0-360°) and θo along y (0-90°), in equal angle steps.
 uniform float FxPhiD < string UIName = "Difference azimuth (slice)"; float UIMin = 0; float UIMax = 180; string UIUnits = "deg";
                        string UIGroup = "BRDF grid"; > = 90.0;
+// The azimuth of incidence φi in modes 0, 1, 3 and 4 (`--phi-i`): l is turned about the normal by it
+// (the plane of incidence of mode 1 with it); 0 is the tangent's direction.
+uniform float FxPhiI < string UIName = "Incidence azimuth"; float UIMin = 0; float UIMax = 360; string UIUnits = "deg";
+                       string UIGroup = "BRDF grid"; > = 0.0;
+// Mode 4 (brdf-check, app/brdf_check.cpp): tile t of side FxViewportSize.x / kFxGridTilesX holds
+// θi = 1° + 2° t; its first FxSampleSide² pixels are outgoing directions drawn by one strategy from
+// the midpoints of a FxSampleSide² grid shifted by FxSampleShift: 0 cosine-weighted, 1 uniform over the hemisphere, 2 half vectors of a GGX
+// lobe of width FxSampleAlpha reflected about (v = 2 (l·h) h − l). Alpha is 0 where v is below the
+// surface. The CPU knows the same directions and weighs them (multiple importance sampling).
+uniform int FxSampleStrategy < string UIName = "Sampling strategy"; string UIWidget = "combo"; string UIItems = "cosine|uniform|half-vector";
+                               string UIGroup = "BRDF grid"; > = 0;
+uniform float FxSampleAlpha < string UIName = "Sampled lobe width"; float UIMin = 0.001; float UIMax = 1; string UIGroup = "BRDF grid"; > = 0.1;
+uniform vec2 FxSampleShift < string UIName = "Sample shift"; string UIGroup = "BRDF grid"; > = vec2(0.0, 0.0);
+uniform int FxSampleSide < string UIName = "Sample grid"; int UIMin = 1; int UIMax = 4096; string UIGroup = "BRDF grid"; > = 64;
+
+vec3 fx_incidence(float theta_degrees) {
+    float t = radians(theta_degrees), p = radians(FxPhiI);
+    return vec3(sin(t) * cos(p), sin(t) * sin(p), cos(t));
+}
+
+vec3 fx_sampled_direction(vec3 l, vec2 u) {
+    float phi = 6.28318530718 * u.y;
+    if (FxSampleStrategy == 0) {
+        float r = sqrt(u.x);
+        return vec3(r * cos(phi), r * sin(phi), sqrt(max(1.0 - u.x, 0.0)));
+    }
+    if (FxSampleStrategy == 1) {
+        float s = sqrt(max(1.0 - u.x * u.x, 0.0));
+        return vec3(s * cos(phi), s * sin(phi), u.x);
+    }
+    float a2 = FxSampleAlpha * FxSampleAlpha;
+    float c2 = (1.0 - u.x) / (1.0 + (a2 - 1.0) * u.x);
+    float sh = sqrt(max(1.0 - c2, 0.0));
+    vec3 h = vec3(sh * cos(phi), sh * sin(phi), sqrt(c2));
+    return 2.0 * dot(l, h) * h - l;
+}
 
 GLSLShader FxBrdfGridFS {
     layout(location = 0) out vec4 color;
@@ -45,16 +81,34 @@ GLSLShader FxBrdfGridFS {
             color = vec4(l.z > 0.0 && v.z > 0.0 ? (FxSwapArguments ? vec3(BRDF(v, l, n, x, y)) : vec3(BRDF(l, v, n, x, y))) : vec3(0.0), 1.0);
             return;
         }
+        if (FxGridMode == 4) {
+            int side = int(FxViewportSize.x) / kFxGridTilesX;
+            int tile = (p.y / side) * kFxGridTilesX + p.x / side;
+            if (tile >= kFxGridIncidences) {
+                color = vec4(0.0);
+                return;
+            }
+            ivec2 cell = p % side;
+            vec3 l = fx_incidence(1.0 + 2.0 * float(tile));
+            vec3 v = fx_sampled_direction(l, fract((vec2(cell) + 0.5) / float(FxSampleSide) + FxSampleShift));
+            if (cell.x >= FxSampleSide || cell.y >= FxSampleSide) v = vec3(0.0, 0.0, -1.0);
+            if (v.z <= 0.0) {
+                color = vec4(0.0);
+                return;
+            }
+            v = normalize(v);
+            color = vec4(FxSwapArguments ? vec3(BRDF(v, l, n, x, y)) : vec3(BRDF(l, v, n, x, y)), 1.0);
+            return;
+        }
         if (FxGridMode == 3) {
             float phi = radians(360.0 * gl_FragCoord.x / FxViewportSize.x), theta_o = radians(90.0 * gl_FragCoord.y / FxViewportSize.y);
-            float theta_i = radians(FxIncidence);
-            vec3 l = vec3(sin(theta_i), 0.0, cos(theta_i)), v = vec3(sin(theta_o) * cos(phi), sin(theta_o) * sin(phi), cos(theta_o));
+            vec3 l = fx_incidence(FxIncidence), v = vec3(sin(theta_o) * cos(phi), sin(theta_o) * sin(phi), cos(theta_o));
             color = vec4(FxSwapArguments ? vec3(BRDF(v, l, n, x, y)) : vec3(BRDF(l, v, n, x, y)), 1.0);
             return;
         }
         if (FxGridMode == 1) {
-            float theta_o = radians(-90.0 + 180.0 * gl_FragCoord.x / FxViewportSize.x), theta_i = radians(FxIncidence);
-            vec3 l = vec3(sin(theta_i), 0.0, cos(theta_i)), v = vec3(sin(theta_o), 0.0, cos(theta_o));
+            float theta_o = radians(-90.0 + 180.0 * gl_FragCoord.x / FxViewportSize.x), phi_i = radians(FxPhiI);
+            vec3 l = fx_incidence(FxIncidence), v = vec3(sin(theta_o) * cos(phi_i), sin(theta_o) * sin(phi_i), cos(theta_o));
             color = vec4(FxSwapArguments ? vec3(BRDF(v, l, n, x, y)) : vec3(BRDF(l, v, n, x, y)), 1.0);
             return;
         }
@@ -64,11 +118,10 @@ GLSLShader FxBrdfGridFS {
             return;
         }
         ivec2 q = p % kFxGridTile;
-        float theta_i = radians(1.0 + 2.0 * float(tile));
         float mu = (float(q.y) + 0.5) / float(kFxGridTile);
         float phi = 6.28318530718 * (float(q.x) + 0.5) / float(kFxGridTile);
         float s = sqrt(max(1.0 - mu * mu, 0.0));
-        vec3 l = vec3(sin(theta_i), 0.0, cos(theta_i)), v = vec3(s * cos(phi), s * sin(phi), mu);
+        vec3 l = fx_incidence(1.0 + 2.0 * float(tile)), v = vec3(s * cos(phi), s * sin(phi), mu);
         color = vec4(FxSwapArguments ? vec3(BRDF(v, l, n, x, y)) : vec3(BRDF(l, v, n, x, y)), 1.0);
     }
 }

@@ -1,7 +1,9 @@
 #include "app/brdf_evaluation.hpp"
+#include <glad/gl.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "app/brdf_check.hpp"
@@ -15,8 +17,8 @@ namespace fxview::app {
 BrdfEvaluation::BrdfEvaluation(const EffectOptions& effect, const std::string& backend) {
     context::ContextOptions options;
     options.backend = context::parse_backend(backend);
-    options.window_width = kGridWidth;
-    options.window_height = kGridHeight;
+    options.window_width = kGridTilesX * kSampleSide;
+    options.window_height = kGridRows * kSampleSide;
     options.window_visible = false;
     context_ = context::create_context(options);
     EffectOptions without_technique = effect;
@@ -32,8 +34,10 @@ BrdfEvaluation::~BrdfEvaluation() {
 
 namespace {
 
-image::FloatImage render_grid(render::EffectSession& session, int width, int height, const std::string& mode, bool swapped, double incidence,
-                              double phi_d = 90.0) {
+// The BrdfGrid technique rendered into `target` with `values` and `settings` (NAME=VALUE of its grid
+// parameters); the session's technique and values are put back afterwards.
+void draw_grid(render::EffectSession& session, const effect::ParameterValues& values, const std::vector<std::string>& settings,
+               const gl::RenderTarget& target) {
     const std::string technique = session.technique();
     const effect::ParameterValues saved = session.values();
     struct Restore {
@@ -46,14 +50,39 @@ image::FloatImage render_grid(render::EffectSession& session, int width, int hei
         }
     } restore{session, technique, saved};
     session.select_technique("BrdfGrid");
-    effect::ParameterValues& values = session.values();
-    effect::set_value_from_text(session.effect(), values, "FxGridMode=" + mode);
-    effect::set_value_from_text(session.effect(), values, std::string("FxSwapArguments=") + (swapped ? "true" : "false"));
-    effect::set_value_from_text(session.effect(), values, "FxIncidence=" + std::to_string(incidence));
-    effect::set_value_from_text(session.effect(), values, "FxPhiD=" + std::to_string(phi_d));
-    gl::RenderTarget target({width, height, 1, 0});
+    session.values() = values;
+    for (const std::string& setting : settings) effect::set_value_from_text(session.effect(), session.values(), setting);
     session.render(scene::Scene{}, target);
+}
+
+image::FloatImage render_grid(render::EffectSession& session, int width, int height, const std::vector<std::string>& settings) {
+    gl::RenderTarget target({width, height, 1, 0});
+    draw_grid(session, session.values(), settings, target);
     return target.read_color(0);
+}
+
+std::vector<std::string> grid_settings(int mode, bool swapped, double incidence, double phi_i, double phi_d = 90.0) {
+    // %.17g: the directions must be the ones the CPU computes (std::to_string keeps 6 decimals).
+    const auto number = [](double x) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.17g", x);
+        return std::string(text);
+    };
+    return {"FxGridMode=" + std::to_string(mode), std::string("FxSwapArguments=") + (swapped ? "true" : "false"),
+            "FxIncidence=" + number(incidence), "FxPhiI=" + number(phi_i), "FxPhiD=" + number(phi_d)};
+}
+
+std::vector<std::string> sample_settings(const brdf::SampleSet& set, bool swapped) {
+    std::vector<std::string> settings = grid_settings(4, swapped, 0.0, set.phi_i_degrees);
+    char shift[96];
+    std::snprintf(shift, sizeof shift, "FxSampleShift=%.17g,%.17g", set.shift.x, set.shift.y);
+    settings.push_back(shift);
+    settings.push_back("FxSampleStrategy=" + std::to_string(static_cast<int>(set.strategy)));
+    settings.push_back("FxSampleSide=" + std::to_string(set.side));
+    char alpha[48];
+    std::snprintf(alpha, sizeof alpha, "FxSampleAlpha=%.17g", set.alpha);
+    settings.push_back(alpha);
+    return settings;
 }
 
 }  // namespace
@@ -70,20 +99,52 @@ void follow_technique(render::EffectSession& session, const std::string& techniq
     effect::set_value_from_text(session.effect(), session.values(), "BrdfModel=" + technique);
 }
 
-image::FloatImage evaluate_brdf_grid(render::EffectSession& session, bool swapped) {
-    return render_grid(session, kGridWidth, kGridHeight, "0", swapped, 0.0);
+image::FloatImage evaluate_brdf_samples(render::EffectSession& session, const brdf::SampleSet& set, bool swapped) {
+    return render_grid(session, kGridTilesX * set.side, kGridRows * set.side, sample_settings(set, swapped));
 }
 
-image::FloatImage evaluate_brdf_plane(render::EffectSession& session, double incidence_degrees, int samples, bool swapped) {
-    return render_grid(session, samples, 1, "1", swapped, incidence_degrees);
+void draw_brdf_samples_rows(render::EffectSession& session, const effect::ParameterValues& values, const SampleRequest& request,
+                            const gl::RenderTarget& target, int first_row, int rows) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, first_row, target.width(), rows);
+    draw_grid(session, values, sample_settings(request.set, request.swapped), target);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+SampleRenderer gpu_sample_renderer(render::EffectSession& session) {
+    return [&session](const brdf::SampleSet& set, bool swapped) { return evaluate_brdf_samples(session, set, swapped); };
+}
+
+SampleRenderer measured_sample_renderer(const fit::MerlBrdf& merl) {
+    return [&merl](const brdf::SampleSet& set, bool swapped) {
+        image::FloatImage image(kGridTilesX * set.side, kGridRows * set.side, 4);
+        for (int tile = 0; tile < kGridIncidences; ++tile) {
+            const glm::dvec3 l = brdf::incident_direction(grid_incidence_degrees(tile), set.phi_i_degrees);
+            for (int b = 0; b < set.side; ++b)
+                for (int a = 0; a < set.side; ++a) {
+                    const glm::dvec3 v = brdf::sampled_direction(set, l, a, b);
+                    float* p = image.pixel((tile % kGridTilesX) * set.side + a, image.height - 1 - ((tile / kGridTilesX) * set.side + b));
+                    if (v.z <= 0) continue;  // the image starts at 0: alpha 0, below the surface
+                    const glm::dvec3 unit = glm::normalize(v);
+                    const std::array<double, 3> f = swapped ? merl.lookup(unit, l) : merl.lookup(l, unit);
+                    for (int c = 0; c < 3; ++c) p[c] = static_cast<float>(f[static_cast<size_t>(c)]);
+                    p[3] = 1.0f;
+                }
+        }
+        return image;
+    };
+}
+
+image::FloatImage evaluate_brdf_plane(render::EffectSession& session, double incidence_degrees, int samples, bool swapped, double phi_i_degrees) {
+    return render_grid(session, samples, 1, grid_settings(1, swapped, incidence_degrees, phi_i_degrees));
 }
 
 image::FloatImage evaluate_brdf_slice(render::EffectSession& session, double phi_d_degrees, int width, int height) {
-    return render_grid(session, width, height, "2", false, 0.0, phi_d_degrees);
+    return render_grid(session, width, height, grid_settings(2, false, 0.0, 0.0, phi_d_degrees));
 }
 
-image::FloatImage evaluate_brdf_hemisphere(render::EffectSession& session, double incidence_degrees, int width, int height) {
-    return render_grid(session, width, height, "3", false, incidence_degrees);
+image::FloatImage evaluate_brdf_hemisphere(render::EffectSession& session, double incidence_degrees, int width, int height, double phi_i_degrees) {
+    return render_grid(session, width, height, grid_settings(3, false, incidence_degrees, phi_i_degrees));
 }
 
 image::FloatImage render_lit_sphere(render::EffectSession& session, int size) {
@@ -92,13 +153,13 @@ image::FloatImage render_lit_sphere(render::EffectSession& session, int size) {
     return target.read_color(0);
 }
 
-std::vector<std::array<double, 3>> measured_plane(const fit::MerlBrdf& merl, double incidence_degrees, int samples) {
-    const double ti = incidence_degrees * std::numbers::pi / 180.0;
-    const glm::dvec3 l(std::sin(ti), 0.0, std::cos(ti));
+std::vector<std::array<double, 3>> measured_plane(const fit::MerlBrdf& merl, double incidence_degrees, int samples, double phi_i_degrees) {
+    const glm::dvec3 l = brdf::incident_direction(incidence_degrees, phi_i_degrees);
+    const double p = phi_i_degrees * std::numbers::pi / 180.0;
     std::vector<std::array<double, 3>> values;
     for (int k = 0; k < samples; ++k) {
         const double to = (-90.0 + 180.0 * (k + 0.5) / samples) * std::numbers::pi / 180.0;
-        values.push_back(merl.lookup(l, glm::dvec3(std::sin(to), 0.0, std::cos(to))));
+        values.push_back(merl.lookup(l, glm::dvec3(std::sin(to) * std::cos(p), std::sin(to) * std::sin(p), std::cos(to))));
     }
     return values;
 }

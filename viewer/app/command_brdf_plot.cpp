@@ -26,29 +26,6 @@ constexpr int kPlaneSamples = 721;  // 180°/721 apart across the plane of incid
 
 double mean_rgb(const float* p) { return (static_cast<double>(p[0]) + p[1] + p[2]) / 3.0; }
 
-// A measured BRDF laid out as the GPU's grid (app/brdf_check.hpp), so that the same quadrature gives
-// its albedo: f(l, v), or f(v, l) when swapped.
-image::FloatImage tabulate_on_grid(const fit::MerlBrdf& merl, bool swapped) {
-    image::FloatImage grid(kGridWidth, kGridHeight, 4);
-    for (int tile = 0; tile < kGridIncidences; ++tile) {
-        const double ti = grid_incidence_degrees(tile) * std::numbers::pi / 180.0;
-        const glm::dvec3 l(std::sin(ti), 0.0, std::cos(ti));
-        const int x0 = (tile % kGridTilesX) * kGridTile, y0 = (tile / kGridTilesX) * kGridTile;
-        for (int b = 0; b < kGridTile; ++b) {
-            const double mu = (b + 0.5) / kGridTile, s = std::sqrt(std::max(1.0 - mu * mu, 0.0));
-            for (int a = 0; a < kGridTile; ++a) {
-                const double phi = 2.0 * std::numbers::pi * (a + 0.5) / kGridTile;
-                const glm::dvec3 v(s * std::cos(phi), s * std::sin(phi), mu);
-                const std::array<double, 3> f = swapped ? merl.lookup(v, l) : merl.lookup(l, v);
-                float* p = grid.pixel(x0 + a, kGridHeight - 1 - (y0 + b));  // rows from the top, as read back
-                for (int c = 0; c < 3; ++c) p[c] = static_cast<float>(f[static_cast<size_t>(c)]);
-                p[3] = 1.0f;
-            }
-        }
-    }
-    return grid;
-}
-
 }  // namespace
 
 CommandRunner add_brdf_plot_command(CLI::App& app) {
@@ -56,7 +33,7 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
         std::vector<std::string> files, measured;
         std::vector<std::string> sets;
         std::string view = "polar", out, csv, size = "800x600", backend = "egl", technique;
-        double incidence = 30, phi_d = 90;
+        double incidence = 30, phi_d = 90, phi_i = 0;
         bool logarithmic = false;
     };
     auto o = std::make_shared<Options>();
@@ -69,6 +46,8 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
     command->add_option("--out", o->out, "PNG (or EXR/PFM for the sphere) to write")->required();
     command->add_option("--csv", o->csv, "Also write the plotted values as CSV");
     command->add_option("--incidence", o->incidence, "Angle of incidence for the polar view, degrees")->check(finite_range(0.0, 89.0));
+    command->add_option("--phi-i", o->phi_i, "Azimuth of incidence (polar, lobe and albedo views), degrees: the polar view plots the plane of incidence at it")
+        ->check(finite_range(0.0, 360.0));
     command->add_flag("--log", o->logarithmic, "Logarithmic radius in the polar view (four decades)");
     command->add_option("--size", o->size, "Image size WxH");
     command->add_option("--set", o->sets, "NAME=VALUE for every file's parameters (repeatable)");
@@ -97,7 +76,7 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
             effect.technique = o->technique;
             BrdfEvaluation evaluation(effect, o->backend);
             if (o->view == "lobe") {
-                const image::FloatImage hemisphere = evaluate_brdf_hemisphere(evaluation.session(), o->incidence, 144, 60);
+                const image::FloatImage hemisphere = evaluate_brdf_hemisphere(evaluation.session(), o->incidence, 144, 60, o->phi_i);
                 image::write_image(o->out, lobe_chart(hemisphere, std::filesystem::path(o->files[0]).stem().string(), o->incidence, {size.x, size.y}));
             } else {
                 // The values themselves in EXR/PFM; in PNG scaled so that the 99th percentile is white.
@@ -113,12 +92,17 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
         std::vector<BrdfSeries> series;
         std::vector<std::vector<std::array<double, 3>>> rgb;  // per file, per sample, for the CSV
         std::vector<double> incidences;
+        BrdfCheckOptions albedo_only;
+        albedo_only.phi_i_degrees = {o->phi_i};
+        albedo_only.reciprocity = false;
         const auto add_albedo = [&](const BrdfCheck& check, BrdfSeries& s, std::vector<std::array<double, 3>>& values) {
-            incidences = check.incidence_degrees;
-            for (const auto& albedo : check.albedo) {
-                s.values.push_back((albedo[0] + albedo[1] + albedo[2]) / 3.0);
-                values.push_back(albedo);
+            incidences.clear();
+            for (const AlbedoEstimate& e : check.albedo) {
+                incidences.push_back(e.incidence_degrees);
+                s.values.push_back((e.rgb[0] + e.rgb[1] + e.rgb[2]) / 3.0);
+                values.push_back(e.rgb);
             }
+            if (check.energy == BrdfCheck::Energy::Unresolved) std::fprintf(stderr, "brdf-plot: %s: %s\n", s.name.c_str(), check.unresolved_reason.c_str());
         };
         for (const auto& file : o->files) {
             EffectOptions effect;
@@ -129,14 +113,14 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
             BrdfSeries s{std::filesystem::path(file).stem().string(), {}};
             std::vector<std::array<double, 3>> values;
             if (o->view == "polar") {
-                const image::FloatImage plane = evaluate_brdf_plane(evaluation.session(), o->incidence, kPlaneSamples);
+                const image::FloatImage plane = evaluate_brdf_plane(evaluation.session(), o->incidence, kPlaneSamples, false, o->phi_i);
                 for (int k = 0; k < kPlaneSamples; ++k) {
                     const float* p = plane.pixel(k, 0);
                     s.values.push_back(mean_rgb(p));
                     values.push_back({p[0], p[1], p[2]});
                 }
             } else {
-                add_albedo(analyse_brdf_grid(evaluate_brdf_grid(evaluation.session(), false), evaluate_brdf_grid(evaluation.session(), true)), s, values);
+                add_albedo(check_brdf(gpu_sample_renderer(evaluation.session()), albedo_only), s, values);
             }
             series.push_back(std::move(s));
             rgb.push_back(std::move(values));
@@ -147,10 +131,10 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
             BrdfSeries s{std::filesystem::path(file).stem().string() + " (measured)", {}};
             std::vector<std::array<double, 3>> values;
             if (o->view == "polar") {
-                values = measured_plane(merl, o->incidence, kPlaneSamples);
+                values = measured_plane(merl, o->incidence, kPlaneSamples, o->phi_i);
                 for (const auto& f : values) s.values.push_back((f[0] + f[1] + f[2]) / 3.0);
             } else {
-                add_albedo(analyse_brdf_grid(tabulate_on_grid(merl, false), tabulate_on_grid(merl, true)), s, values);
+                add_albedo(check_brdf(measured_sample_renderer(merl), albedo_only), s, values);
             }
             series.push_back(std::move(s));
             rgb.push_back(std::move(values));

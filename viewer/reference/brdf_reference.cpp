@@ -9,6 +9,7 @@
 #include <optional>
 
 
+#include "brdf/direction_sampling.hpp"
 #include "brdf/models.hpp"
 #include "reference/brdf_sensitivity.hpp"
 #include "reference/environment_reference.hpp"
@@ -103,9 +104,9 @@ std::optional<brdf::Directions> grid_directions(const ShadingInput& in, const Re
     brdf::Directions d{{0, 0, 1}, {}, {}, {1, 0, 0}};
     switch (static_cast<int>(c.number("FxGridMode"))) {
         case 1: {
-            const double to = radians(-90.0 + 180.0 * fx / width), ti = radians(c.number("FxIncidence"));
-            d.l = {std::sin(ti), 0, std::cos(ti)};
-            d.v = {std::sin(to), 0, std::cos(to)};
+            const double to = radians(-90.0 + 180.0 * fx / width), pi = radians(c.number("FxPhiI"));
+            d.l = brdf::incident_direction(c.number("FxIncidence"), c.number("FxPhiI"));
+            d.v = {std::sin(to) * std::cos(pi), std::sin(to) * std::sin(pi), std::cos(to)};
             break;
         }
         case 2: {
@@ -118,17 +119,35 @@ std::optional<brdf::Directions> grid_directions(const ShadingInput& in, const Re
             break;
         }
         case 3: {
-            const double phi = radians(360.0 * fx / width), to = radians(90.0 * fy / height), ti = radians(c.number("FxIncidence"));
-            d.l = {std::sin(ti), 0, std::cos(ti)};
+            const double phi = radians(360.0 * fx / width), to = radians(90.0 * fy / height);
+            d.l = brdf::incident_direction(c.number("FxIncidence"), c.number("FxPhiI"));
             d.v = {std::sin(to) * std::cos(phi), std::sin(to) * std::sin(phi), std::cos(to)};
+            break;
+        }
+        case 4: {  // brdf-check's sample directions (brdf/direction_sampling.hpp)
+            const int side = static_cast<int>(width) / 9, px = static_cast<int>(fx), py = static_cast<int>(fy), tile = (py / side) * 9 + px / side;
+            if (tile >= 45) return std::nullopt;
+            const auto strategy = static_cast<int>(c.number("FxSampleStrategy"));
+            brdf::SampleSet set;
+            set.strategy = static_cast<brdf::SamplingStrategy>(std::clamp(strategy, 0, 2));
+            set.alpha = c.number("FxSampleAlpha");
+            const std::vector<double>& shift = c.values.numbers.at("FxSampleShift");
+            set.shift = {shift.at(0), shift.at(1)};
+            set.phi_i_degrees = c.number("FxPhiI");
+            set.side = static_cast<int>(c.number("FxSampleSide"));
+            if (px % side >= set.side || py % side >= set.side) return std::nullopt;
+            d.l = brdf::incident_direction(1.0 + 2.0 * tile, set.phi_i_degrees);
+            d.v = brdf::sampled_direction(set, d.l, px % side, py % side);
+            if (d.v.z <= 0) return std::nullopt;
+            d.v = glm::normalize(d.v);
             break;
         }
         default: {
             const int px = static_cast<int>(fx), py = static_cast<int>(fy), tile = (py / 256) * 9 + px / 256;
             if (tile >= 45) return std::nullopt;
-            const double ti = radians(1.0 + 2.0 * tile), mu = (py % 256 + 0.5) / 256.0, phi = 2.0 * std::numbers::pi * (px % 256 + 0.5) / 256.0;
+            const double mu = (py % 256 + 0.5) / 256.0, phi = 2.0 * std::numbers::pi * (px % 256 + 0.5) / 256.0;
             const double s = std::sqrt(std::max(1.0 - mu * mu, 0.0));
-            d.l = {std::sin(ti), 0, std::cos(ti)};
+            d.l = brdf::incident_direction(1.0 + 2.0 * tile, c.number("FxPhiI"));
             d.v = {s * std::cos(phi), s * std::sin(phi), mu};
         }
     }

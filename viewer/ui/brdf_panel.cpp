@@ -200,11 +200,32 @@ void BrdfPanel::load_measured(const std::string& path) {
     std::snprintf(measured_path_, sizeof measured_path_, "%s", path.c_str());
 }
 
-const app::BrdfCheck& BrdfPanel::check(render::EffectSession& session) {
+void BrdfPanel::start_check(render::EffectSession& session) {
     app::follow_technique(session, session.technique());
-    check_ = app::analyse_brdf_grid(app::evaluate_brdf_grid(session, false), app::evaluate_brdf_grid(session, true));
-    checked_values_ = session.values().numbers;
-    return *check_;
+    checker_.start(session);
+    check_.reset();
+    checked_effect_ = &session.effect();
+    checked_technique_ = session.technique();
+    check_error_.clear();
+}
+
+void BrdfPanel::update(render::EffectSession* session) {
+    if (!checker_.running()) return;
+    if (!session || &session->effect() != checked_effect_ || session->technique() != checked_technique_) {
+        checker_.cancel();
+        check_error_ = "check dropped: the effect or its technique changed";
+        return;
+    }
+    try {
+        // About 30 ms of rendering a UI frame (the UI's own work comes on top).
+        if (checker_.step(*session, 0.03)) {
+            check_ = checker_.result();
+            checked_values_ = checker_.values().numbers;
+        }
+    } catch (const std::exception& e) {
+        checker_.cancel();
+        check_error_ = e.what();
+    }
 }
 
 void BrdfPanel::draw(render::EffectSession* session) {
@@ -268,21 +289,30 @@ void BrdfPanel::draw(render::EffectSession* session) {
     }
     if (!measured_error_.empty()) ImGui::TextWrapped("%s", measured_error_.c_str());
     if (measured_) ImGui::TextWrapped("measured (orange): %s", measured_name_.c_str());
-    if (ImGui::Button("Check energy and reciprocity")) {
-        try {
-            check(*session);
-        } catch (const std::exception& e) {
-            error_ = e.what();
-        }
+    if (checker_.running()) {
+        ImGui::ProgressBar(static_cast<float>(checker_.progress()), ImVec2(-1, 0), "checking energy and reciprocity");
+        if (ImGui::SmallButton("Cancel check")) checker_.cancel();
+    } else if (ImGui::Button("Check energy and reciprocity")) {
+        start_check(*session);
     }
+    if (!check_error_.empty()) ImGui::TextWrapped("%s", check_error_.c_str());
     if (!check_) return;
     if (checked_values_ != session->values().numbers) ImGui::TextDisabled("(for earlier parameter values: check again)");
+    // The first azimuth of incidence (0°), as the plot's caption says; the verdict covers every azimuth checked.
     std::vector<float> albedo;
-    for (const auto& rgb : check_->albedo) albedo.push_back(static_cast<float>((rgb[0] + rgb[1] + rgb[2]) / 3.0));
-    ImGui::PlotLines("##albedo", albedo.data(), static_cast<int>(albedo.size()), 0, "albedo, 1..89 deg", 0.0f,
+    for (const app::AlbedoEstimate& e : check_->albedo)
+        if (e.phi_i_degrees == check_->albedo.front().phi_i_degrees) albedo.push_back(static_cast<float>((e.rgb[0] + e.rgb[1] + e.rgb[2]) / 3.0));
+    ImGui::PlotLines("##albedo", albedo.data(), static_cast<int>(albedo.size()), 0, "albedo, 1..89 deg (phi_i 0)", 0.0f,
                      std::max(1.1f, *std::max_element(albedo.begin(), albedo.end())), ImVec2(ImGui::GetContentRegionAvail().x, 90));
-    ImGui::Text("largest albedo %.4f at %.0f deg: %s", check_->max_albedo, check_->max_albedo_degrees,
-                check_->conserves_energy ? "energy conserving" : "reflects more than it receives");
+    ImGui::TextWrapped("largest albedo %.4f at %.0f deg (phi_i %g): %s", check_->max_albedo, check_->max_albedo_degrees, check_->max_albedo_phi_degrees,
+                       check_->energy == app::BrdfCheck::Energy::Conserves  ? "energy conserving"
+                       : check_->energy == app::BrdfCheck::Energy::Violates ? "reflects more than it receives"
+                                                                            : "unresolved");
+    if (check_->energy == app::BrdfCheck::Energy::Unresolved) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
+        ImGui::TextWrapped("No verdict: %s.", check_->unresolved_reason.c_str());
+        ImGui::PopStyleColor();
+    }
     ImGui::Text("reciprocity: largest relative |f(l,v) - f(v,l)| %.3g: %s", check_->reciprocity,
                 check_->reciprocal ? "reciprocal" : "not reciprocal");
     ImGui::Text("negative at %ld, NaN or infinite at %ld of %ld samples", check_->negative, check_->non_finite, check_->samples);

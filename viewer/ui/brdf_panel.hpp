@@ -13,6 +13,7 @@
 #include "app/brdf_check.hpp"
 #include "fit/merl.hpp"
 #include "render/effect_session.hpp"
+#include "ui/brdf_check_runner.hpp"
 #include "ui/ui_image.hpp"
 
 namespace fxview::ui {
@@ -20,8 +21,14 @@ namespace fxview::ui {
 class BrdfPanel {
 public:
     void draw(render::EffectSession* session);
-    // The checks at the current parameter values (the Check button; the script verb brdf-check).
-    const app::BrdfCheck& check(render::EffectSession& session);
+    // The checks at the current parameter values (the Check button; the script verb brdf-check),
+    // spread over the frames that follow (update); a check of another effect or technique is
+    // dropped when that changes.
+    void start_check(render::EffectSession& session);
+    void update(render::EffectSession* session);  // once a frame: a slice of a running check
+    bool checking() const { return checker_.running(); }
+    const std::optional<app::BrdfCheck>& last_check() const { return check_; }
+    const std::string& check_error() const { return check_error_; }
     // A MERL file to overlay on the polar plot (the Measured field; the script verb brdf-measured).
     // Throws Error naming the file when it cannot be read.
     void load_measured(const std::string& path);
@@ -68,6 +75,9 @@ private:
     float plotted_incidence_ = -1.0f;
     std::optional<app::BrdfCheck> check_;
     std::map<std::string, std::vector<double>> checked_values_;
+    BrdfCheckRunner checker_;
+    const void* checked_effect_ = nullptr;
+    std::string checked_technique_, check_error_;
     std::string error_;
     std::optional<fit::MerlBrdf> measured_;
     std::string measured_name_, measured_error_;

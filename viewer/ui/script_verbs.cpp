@@ -193,10 +193,24 @@ void Viewer::verb_tab(const ScriptAction& a) {
 
 void Viewer::verb_brdf_check(const ScriptAction& a) {  // as the BRDF tab's Check button; prints the figures as JSON
     require_brdf_grid(session(), a.verb);
-    const app::BrdfCheck& c = brdf_panel_.check(*session());
+    if (!brdf_check_waiting_) {
+        brdf_panel_.start_check(*session());
+        brdf_check_waiting_ = true;
+        brdf_check_start_frame_ = frame_number_;
+    }
+    if (brdf_panel_.checking()) {  // retried next frame: the check runs across frames
+        --script_position_;
+        wait_frames_ = 1;
+        return;
+    }
+    brdf_check_waiting_ = false;
+    if (!brdf_panel_.last_check()) throw Error("brdf-check: " + brdf_panel_.check_error());
+    const app::BrdfCheck& c = *brdf_panel_.last_check();
     std::cout << nlohmann::json{{"brdf_check", {{"max_albedo", c.max_albedo}, {"conserves_energy", c.conserves_energy},
+                                                {"energy", app::energy_verdict(c.energy)}, {"unresolved_reason", c.unresolved_reason},
                                                 {"reciprocity_max_relative", c.reciprocity}, {"reciprocal", c.reciprocal},
-                                                {"negative_samples", c.negative}, {"non_finite_samples", c.non_finite}}}}
+                                                {"negative_samples", c.negative}, {"non_finite_samples", c.non_finite}}},
+                                {"frames_while_checking", frame_number_ - brdf_check_start_frame_}}
                      .dump()
               << std::endl;
     requested_tab_ = "BRDF";

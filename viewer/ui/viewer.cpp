@@ -97,6 +97,7 @@ int Viewer::run() {
         last_frame = now;
         if (effect_.poll()) on_effect_opened();  // hot reload; a failed start retried when its file is saved
         plugin_panel_.update(session());  // a running plugin's live parameters; its result when done
+        brdf_panel_.update(session());    // a slice of a running BRDF check
         follow_plugin_technique();
         if (target_) run_script_step();  // actions need the render view, made by the first frame
         frame();
@@ -113,7 +114,7 @@ int Viewer::run() {
 // event a few frames follow, so that ImGui's hover and release states settle. Returns the
 // seconds it slept.
 double Viewer::wait_or_poll_events() {
-    const bool busy = !picture_done() || picture_animated() || plugin_panel_.running() || script_position_ < script_.size() ||
+    const bool busy = !picture_done() || picture_animated() || plugin_panel_.running() || brdf_panel_.checking() || script_position_ < script_.size() ||
                       options_.frames > 0 || awake_frames_ > 0 || shot_job_ || !pending_view_shot_.empty();
     if (busy) {
         glfwPollEvents();

@@ -183,6 +183,8 @@ private:
     std::vector<ScriptAction> script_;
     size_t script_position_ = 0;
     int wait_frames_ = 0;
+    bool brdf_check_waiting_ = false;  // the script's brdf-check started a check and waits for it
+    int brdf_check_start_frame_ = 0;
     int awaited_key_ = 0;  // wait-key: the GLFW key the script waits for, until key_deadline_
     std::string awaited_key_name_;
     std::chrono::steady_clock::time_point key_deadline_;
