@@ -85,6 +85,43 @@ TEST_CASE("a uniform environment prefilters to itself and its SH irradiance is e
         CHECK(lighting::evaluate_irradiance(p.irradiance, n).g == doctest::Approx(1.0).epsilon(1e-5));
 }
 
+TEST_CASE("the sky's ground is a grey ground of albedo 0.2 lit by that sky: darker under a low sun") {
+    // Issue 28: the ground was 0.208 at every elevation. Here its radiance is checked against 0.2/π
+    // times the horizontal irradiance the test integrates itself from the environment: the cube's
+    // texels above the horizon (solid angle per texel from the cube's geometry) plus the sun disc.
+    const auto luminance = [](const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; };
+    double ground_at[2] = {0, 0};
+    int index = 0;
+    for (const char* source : {"sky:5", "sky:60"}) {
+        CAPTURE(source);
+        const lighting::Environment sky = lighting::make_environment(source, 64);
+        double irradiance = 0;
+        const int n = sky.radiance.size;
+        for (int face = 0; face < 6; ++face)
+            for (int y = 0; y < n; ++y)
+                for (int x = 0; x < n; ++x) {
+                    const glm::dvec3 d = lighting::cube_direction(face, (x + 0.5) / n, (y + 0.5) / n);
+                    const double r = glm::length(d);
+                    const glm::dvec3 u = d / r;
+                    if (u.y <= 0) continue;
+                    // dω of a texel at distance r from the cube's centre, face at distance 1, texel side 2/n.
+                    const double solid_angle = (2.0 / n) * (2.0 / n) / (r * r * r);
+                    irradiance += luminance(glm::dvec3(sky.radiance.at(face, x, y))) * u.y * solid_angle;
+                }
+        for (const auto& disc : sky.discs) irradiance += luminance(disc.radiance) * disc.solid_angle() * std::max(disc.direction.y, 0.0);
+        const glm::dvec3 below = lighting::cube_direction(3, 0.5, 0.5);  // -Y face's centre: straight down
+        const auto& face = lighting::select_cube_face(glm::normalize(below));
+        const int tx = std::min(n - 1, static_cast<int>(face.s * n)), ty = std::min(n - 1, static_cast<int>(face.t * n));
+        const double ground = luminance(glm::dvec3(sky.radiance.at(face.face, tx, ty)));
+        // The cube's sky texels are a midpoint rule over smooth radiance: 2 % covers it at 64² a face.
+        CHECK(ground == doctest::Approx(0.2 / kPi * irradiance).epsilon(0.02));
+        ground_at[index++] = ground;
+    }
+    // 0.2/π (0.8π sin 5°/sin 35° + 0.2π) = 0.064 against 0.281 at 60°.
+    CHECK(ground_at[0] == doctest::Approx(0.0643).epsilon(0.03));
+    CHECK(ground_at[0] < 0.3 * ground_at[1]);
+}
+
 TEST_CASE("SH irradiance of a sky brightening towards the zenith matches the analytic integral") {
     // L = max(y, 0): E(up)/π = ∫ cos² dω / π = 2/3, E(down) = 0.
     const lighting::Environment sky{lighting::tabulate(32, 2, [](const glm::dvec3& d) { return glm::vec3(static_cast<float>(std::max(d.y, 0.0))); }), {}};
@@ -259,6 +296,16 @@ TEST_CASE("environment files: equirectangular EXR, six faces and a cube cross li
     CHECK(r.exit_code == 1);
     CHECK(r.err.find("wrong-shape.exr") != std::string::npos);
     CHECK(r.err.find("equirectangular") != std::string::npos);
+    // Finite but near float's maximum: prefiltering would overflow to NaN pixels (issue 28). Refused.
+    const std::string huge = temp_path("huge.exr");
+    image::FloatImage bright(64, 32, 4);
+    for (float& v : bright.data) v = 1.0f;
+    bright.pixel(10, 10)[0] = 3e38f;
+    image::write_exr(huge, bright);
+    const Result overflow = run("render " + white_metal + " --environment " + huge + " --out " + temp_path("x.png"));
+    CHECK(overflow.exit_code == 1);
+    CHECK(overflow.err.find("huge.exr") != std::string::npos);
+    CHECK(overflow.err.find("above 1e20") != std::string::npos);
 }
 
 TEST_CASE("Radiance .hdr files: read exactly; truncated or malformed ones are errors naming the file, never a hang") {
@@ -268,7 +315,8 @@ TEST_CASE("Radiance .hdr files: read exactly; truncated or malformed ones are er
         file.write(reinterpret_cast<const char*>(pixels.data()), static_cast<std::streamsize>(pixels.size()));
     };
     const std::string header = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 16\n";
-    // Run-length scanlines: each channel a run of 16 equal bytes; RGBE (128, 64, 32, 129) = (1, 0.5, 0.25).
+    // Run-length scanlines: each channel a run of 16 equal bytes; RGBE (128, 64, 32, 129) is, as
+    // Radiance's colr_color() decodes it, (m + 0.5) 2^(129 - 136): (128.5, 64.5, 32.5) / 128.
     std::vector<std::uint8_t> rle;
     for (int row = 0; row < 2; ++row) {
         rle.insert(rle.end(), {2, 2, 0, 16});
@@ -279,9 +327,22 @@ TEST_CASE("Radiance .hdr files: read exactly; truncated or malformed ones are er
     const texture::TextureData t = texture::load_texture_file(good);
     float rgba[4];
     texture::read_texel(t, 0, 0, 15, 1, rgba);
-    CHECK(rgba[0] == 1.0f);  // exact powers of two
-    CHECK(rgba[1] == 0.5f);
-    CHECK(rgba[2] == 0.25f);
+    CHECK(rgba[0] == 128.5f / 128);  // exact in float
+    CHECK(rgba[1] == 64.5f / 128);
+    CHECK(rgba[2] == 32.5f / 128);
+    // An exponent of 255 (2^119 per step) reads as finite floats near float's maximum: refused as an
+    // environment, naming the file.
+    std::vector<std::uint8_t> blinding;
+    for (int row = 0; row < 8; ++row) {  // 16 x 8: an equirectangular shape
+        blinding.insert(blinding.end(), {2, 2, 0, 16});
+        for (const std::uint8_t value : {200, 200, 200, 255}) blinding.insert(blinding.end(), {static_cast<std::uint8_t>(128 + 16), value});
+    }
+    const std::string sun = temp_path("blinding.hdr");
+    write(sun, "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 8 +X 16\n", blinding);
+    const Result blinded = run("render --environment " + sun + " " + std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/analytic.fx --size 8x8 --out " +
+                               temp_path("x.png"));
+    CHECK(blinded.exit_code == 1);
+    CHECK(blinded.err.find("blinding.hdr") != std::string::npos);
     // Cut inside the second scanline's runs (Debian's stb loops forever here: CVE-2021-42715).
     const std::string cut = temp_path("cut.hdr");
     write(cut, header, std::vector<std::uint8_t>(rle.begin(), rle.begin() + 16));

@@ -73,10 +73,14 @@ Environment make_sky(const Sky& sky, int size) {
     // so a lower sun lights horizontal surfaces less, as outdoors; the sky's horizontal share stays.
     const double default_sin = std::sin(35.0 * kPi / 180.0);
     const double sun_scale = 0.8 * kPi / default_sin, sky_scale = 0.2 * kPi / sky_horizontal;
-    const double ground_radiance = 0.2 * 1.0;                     // a grey ground of albedo 0.2 under irradiance pi
+    // A grey Lambertian ground of albedo 0.2 lit by this sky: radiance 0.2/π times the horizontal
+    // irradiance of sun (sun_scale sin(elevation), in the sun's colour) and sky (0.2π, in the sky's):
+    // 0.2 at the default elevation, 0.064 with the sun at 5°, dark once it has set.
+    const glm::dvec3 ground_radiance =
+        0.2 / kPi * (sun_scale * std::max(std::sin(el), 0.0) * sun_colour + sky_scale * sky_horizontal * sky_colour);
     Environment environment;
     environment.radiance = tabulate(size, 2, [&](const glm::dvec3& d) {
-        if (d.y < 0.0) return glm::vec3(ground_radiance * glm::mix(sun_colour, sky_colour, 0.2));
+        if (d.y < 0.0) return glm::vec3(ground_radiance);
         const double chi = std::acos(std::clamp(glm::dot(d, sun), -1.0, 1.0));
         return glm::vec3(sky_scale * clear_sky(std::acos(std::clamp(d.y, 0.0, 1.0)), chi) * sky_colour);
     });
@@ -245,10 +249,17 @@ Environment make_environment(const std::string& source, int size, const Resource
     if (source.find_first_of("/.,") == std::string::npos && !std::filesystem::exists(source, error))
         throw UsageError("unknown environment '" + source + "' (studio, sky, sky:ELEVATION[,CCT], furnace, none, or an image file)");
     Environment environment{from_files(source, size, limits), {}};
+    // Finite is not enough: prefiltering and SH sum thousands of texels times weights in float, so a
+    // texel near float's maximum (an EXR value of 3e38, an RGBE exponent of 255) overflows to NaN
+    // pixels. The brightest real sources are far below the bound (the sun's disc: about 1.6e9 cd/m²).
+    constexpr float kMaxRadiance = 1e20f;
     for (const auto& face : environment.radiance.faces)
-        for (const glm::vec3& texel : face)
+        for (const glm::vec3& texel : face) {
             if (!std::isfinite(texel.r) || !std::isfinite(texel.g) || !std::isfinite(texel.b) || texel.r < 0 || texel.g < 0 || texel.b < 0)
                 throw Error(source + ": the environment holds NaN, infinite or negative radiance");
+            if (std::max({texel.r, texel.g, texel.b}) > kMaxRadiance)
+                throw Error(source + ": the environment holds radiance above 1e20, beyond what float sums of its texels can hold");
+        }
     return environment;
 }
 

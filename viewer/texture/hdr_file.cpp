@@ -73,8 +73,10 @@ TextureData load_hdr(const std::string& path, const ResourceLimits& limits) {
         for (long long x = 0; x < width; ++x) {
             const std::uint8_t* p = &rgbe[static_cast<size_t>(x) * 4];
             float* out = &rgba[static_cast<size_t>(y * width + x) * 4];
-            const float scale = p[3] == 0 ? 0.0f : std::ldexp(1.0f, p[3] - 136);  // 2^(e - 128) / 256
-            for (int c = 0; c < 3; ++c) out[c] = p[c] * scale;
+            // As Radiance's colr_color(): (m + 0.5) 2^(e - 128) / 256, the middle of the mantissa's step
+            // (m 2^(e-136) alone is up to 0.4 % dark); e = 0 is black.
+            const float scale = p[3] == 0 ? 0.0f : std::ldexp(1.0f, p[3] - 136);
+            for (int c = 0; c < 3; ++c) out[c] = p[3] == 0 ? 0.0f : (p[c] + 0.5f) * scale;
             out[3] = 1.0f;
         }
     }

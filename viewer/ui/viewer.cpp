@@ -255,18 +255,50 @@ bool Viewer::picture_animated() const {
 // about 50 ms, by the last complete picture's measured time) and scaled up into the view; the
 // pieces then refine it row by row. A drag, which starts a new picture at every move, so shows
 // a coarse but whole picture at once instead of a torn one. True when it drew one this frame.
-bool Viewer::render_coarse_preview(std::uint64_t key, int width, int height) {
-    constexpr double kSlowPicture = 0.15, kPreviewSeconds = 0.05;
-    const double last = schedule_.last_picture_seconds();
-    if (!schedule_.pending() || schedule_.refining() || key == preview_key_ || last < kSlowPicture || !picture_progressive()) return false;
-    preview_scale_ = std::clamp(static_cast<int>(std::ceil(std::sqrt(last / kPreviewSeconds))), 2, 32);
+namespace {
+constexpr double kSlowPicture = 0.15, kPreviewSeconds = 0.05;
+}
+
+// The preview's resolution: from the measured cost of a preview pixel (a tiny picture is drawn by one
+// thread and pays for whole 4x4 blocks at its edges: on llvmpipe 2-4 times the full picture's cost
+// per pixel), else from the last picture's, 4 times over.
+int Viewer::preview_scale_for(int width, int height) const {
+    const double pixels = static_cast<double>(width) * height;
+    const double per_pixel = preview_pixel_seconds_ > 0 ? preview_pixel_seconds_ : 4.0 * schedule_.last_picture_seconds() / pixels;
+    return std::clamp(static_cast<int>(std::ceil(std::sqrt(pixels * per_pixel / kPreviewSeconds))), 2, 64);
+}
+
+double Viewer::draw_preview(int width, int height) {
     const int preview_width = (width + preview_scale_ - 1) / preview_scale_, preview_height = (height + preview_scale_ - 1) / preview_scale_;
     if (!preview_ || preview_->width() != preview_width || preview_->height() != preview_height)
         preview_ = std::make_unique<gl::RenderTarget>(gl::RenderTargetDesc{preview_width, preview_height, 1, 0});
+    const auto start = std::chrono::steady_clock::now();
     render_scene(*preview_);
-    glBlitNamedFramebuffer(preview_->framebuffer(), target_->framebuffer(), 0, 0, preview_width, preview_height, 0, 0, width, height,
-                           GL_COLOR_BUFFER_BIT, GL_LINEAR);
     glFinish();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    preview_pixel_seconds_ = seconds / (static_cast<double>(preview_width) * preview_height);
+    render_seconds_.push_back(seconds);
+    return seconds;
+}
+
+bool Viewer::render_coarse_preview(std::uint64_t key, int width, int height) {
+    const double last = schedule_.last_picture_seconds();
+    if (!picture_progressive() || last < kSlowPicture) return false;
+    if (!schedule_.pending()) {
+        // A slow picture just completed: a preview of it is measured once (not shown), so that the
+        // first preview of a drag already has the resolution that keeps it near 50 ms.
+        if (calibrated_key_ != key) {
+            calibrated_key_ = key;
+            preview_scale_ = preview_scale_for(width, height);
+            draw_preview(width, height);
+        }
+        return false;
+    }
+    if (schedule_.refining() || key == preview_key_) return false;
+    preview_scale_ = preview_scale_for(width, height);
+    draw_preview(width, height);
+    glBlitNamedFramebuffer(preview_->framebuffer(), target_->framebuffer(), 0, 0, preview_->width(), preview_->height(), 0, 0, width, height,
+                           GL_COLOR_BUFFER_BIT, GL_LINEAR);
     preview_key_ = key;
     return true;
 }

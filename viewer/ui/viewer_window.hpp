@@ -72,6 +72,8 @@ private:
     // pieces then refine it row by row. A drag, which starts a new picture at every move, so shows
     // a coarse but whole picture at once instead of a torn one. True when it drew one this frame.
     bool render_coarse_preview(std::uint64_t key, int width, int height);
+    int preview_scale_for(int width, int height) const;
+    double draw_preview(int width, int height);  // into preview_ at preview_scale_; returns its seconds
     bool picture_progressive() const;
     void frame();
     // The render view's picture as rendered (linear values, alpha kept).
@@ -159,6 +161,8 @@ private:
     std::unique_ptr<gl::RenderTarget> preview_;  // the coarse picture a slow one starts with
     std::uint64_t preview_key_ = 0;
     int preview_scale_ = 1;
+    double preview_pixel_seconds_ = 0;     // measured cost of a preview pixel (0: not yet)
+    std::uint64_t calibrated_key_ = 0;     // the picture whose preview cost was last measured
     bool shot_at_view_size_ = true;          // screenshots: the view as it is, unless a size of their own is asked for
     std::string pending_view_shot_;          // written when the view's picture is complete
     std::unique_ptr<ScreenshotJob> shot_job_;  // a screenshot at shot_size_, rendered in pieces
