@@ -568,6 +568,35 @@ TEST_CASE(".brdf files load as effects: check, list with ranges and defaults, re
     CHECK(compare.out.find("\"reference\":false") != std::string::npos);
 }
 
+TEST_CASE("BRDF Explorer's own leniencies load: words after 'analytic', isFunc and unknown sections, no final end, names fxview holds") {
+    const std::string dir = std::string(FXVIEW_TEST_EFFECTS) + "/brdf/explorer/";
+    const auto albedo_at_normal = [&](const std::string& file, const std::string& sets, int channel) {
+        const Result r = run("brdf-check " + dir + file + " --phi-i 0 --json " + sets);
+        CAPTURE(r.err);
+        REQUIRE(r.exit_code == 0);
+        return nlohmann::json::parse(r.out)["albedo"][0]["rgb"][channel].get<double>();
+    };
+    // Each is a Lambertian of albedo 0.5: brdf-check integrates it to 1e-4.
+    CHECK(albedo_at_normal("header_words.brdf", "", 0) == doctest::Approx(0.5).epsilon(1e-3));
+    CHECK(albedo_at_normal("is_func.brdf", "", 0) == doctest::Approx(0.5).epsilon(1e-3));
+    CHECK(albedo_at_normal("no_final_end.brdf", "--set a=0.15915494", 0) == doctest::Approx(0.5).epsilon(1e-3));
+    CHECK(albedo_at_normal("clashing_names.brdf", "", 0) == doctest::Approx(0.5).epsilon(1e-3));
+    // The renamed parameter answers to its fxview name.
+    CHECK(albedo_at_normal("clashing_names.brdf", "--set brdf_color=0.2,0.2,0.1", 0) == doctest::Approx(0.3).epsilon(1e-3));
+    // What was skipped or assumed is said, at the .brdf's lines.
+    const Result sections = run("check " + dir + "is_func.brdf");
+    CHECK(sections.exit_code == 0);
+    CHECK((sections.out + sections.err).find("is_func.brdf:9: warning: the importance-sampling section 'isFunc' is not used") != std::string::npos);
+    CHECK((sections.out + sections.err).find("is_func.brdf:14: warning: unknown section 'notes' skipped") != std::string::npos);
+    const Result end = run("check " + dir + "no_final_end.brdf");
+    CHECK(end.exit_code == 0);
+    CHECK((end.out + end.err).find("no_final_end.brdf:5: warning: '::begin shader' without '::end shader'") != std::string::npos);
+    const Result clash = run("check " + dir + "clashing_names.brdf");
+    CHECK(clash.exit_code == 0);
+    CHECK((clash.out + clash.err).find("clashing_names.brdf:7: warning: parameter 'color' is called brdf_color") != std::string::npos);
+    CHECK((clash.out + clash.err).find("'environment_filter_roughness' is renamed") != std::string::npos);
+}
+
 TEST_CASE("malformed .brdf files exit 1 naming the .brdf's file and line") {
     const std::map<std::string, std::string> expected = {
         {"bad_parameter.brdf", "bad_parameter.brdf:3: maximum"},
@@ -575,8 +604,7 @@ TEST_CASE("malformed .brdf files exit 1 naming the .brdf's file and line") {
         {"no_brdf_function.brdf", "no_brdf_function.brdf:2: the shader block does not define"},
         {"no_shader.brdf", "no_shader.brdf:4: no '::begin shader'"},
         {"not_analytic.brdf", "not_analytic.brdf:1: a .brdf file fxview can render starts with 'analytic'"},
-        {"unknown_type.brdf", "unknown_type.brdf:3: unknown parameter type 'vec2'"},
-        {"unterminated_shader.brdf", "unterminated_shader.brdf:5: '::begin shader' without '::end shader'"}};
+        {"unknown_type.brdf", "unknown_type.brdf:3: unknown parameter type 'vec2'"}};
     // The BRDF is compiled into three techniques; each compiler message is reported once, naming them.
     const Result shared = run("check " + std::string(FXVIEW_TEST_EFFECTS) + "/brdf/malformed/broken_shader.brdf");
     CHECK(std::count(shared.out.begin(), shared.out.end(), '\n') == 3);

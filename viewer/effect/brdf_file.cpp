@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <set>
 #include <sstream>
 
 #include "core/text.hpp"
@@ -100,6 +101,42 @@ bool defines_brdf_function(const std::string& line) {
     return false;
 }
 
+// Names the programs a .brdf file is compiled into already declare at global scope (effects/lib:
+// vertex inputs and outputs, the output `color`, the environment's helpers, the scene's uniforms).
+// A file's own use of one is renamed brdf_NAME throughout its shader block, so that no user name
+// can clash; names starting with fx_/Fx are fxview's (docs/effect-format.md).
+const std::set<std::string>& reserved_names() {
+    static const std::set<std::string> names = {
+        "color", "uv", "corner", "main", "in_position", "in_normal", "in_tangent", "in_bitangent", "in_uv", "vs_out", "fs_in", "VertexData",
+        "environment_dfg", "environment_direction", "environment_facing_normal", "environment_filter_roughness", "environment_irradiance",
+        "environment_light", "environment_radiance", "World", "WorldInverseTranspose", "ViewProjection", "CameraPosition", "LightPosition",
+        "LightIrradiance", "kPi"};
+    return names;
+}
+
+// `line` with every reserved identifier (as a whole word) renamed brdf_NAME.
+std::string rename_reserved(const std::string& line, std::set<std::string>& renamed) {
+    std::string out;
+    out.reserve(line.size());
+    for (size_t at = 0; at < line.size();) {
+        if (!is_identifier_char(line[at]) || (at > 0 && is_identifier_char(line[at - 1]))) {
+            out += line[at++];
+            continue;
+        }
+        size_t end = at;
+        while (end < line.size() && is_identifier_char(line[end])) ++end;
+        const std::string word = line.substr(at, end - at);
+        if (reserved_names().count(word) && !std::isdigit(static_cast<unsigned char>(word[0]))) {
+            out += "brdf_" + word;
+            renamed.insert(word);
+        } else {
+            out += word;
+        }
+        at = end;
+    }
+    return out;
+}
+
 }  // namespace
 
 bool is_brdf_file(const std::string& path) {
@@ -114,7 +151,10 @@ TranslatedLines translate_brdf_file(const std::string& path, const std::vector<s
         out.lines.push_back(std::move(text));
         out.origins.push_back(origin);
     };
-    enum class Block { None, Parameters, Shader };
+    const auto warn = [&](int line, const std::string& message) { out.warnings.push_back(path + ":" + std::to_string(line) + ": warning: " + message); };
+    enum class Block { None, Parameters, Shader, Skipped };
+    std::string skipped;  // the name of the section being skipped
+    std::set<std::string> renamed;  // reserved names the shader block used
     Block block = Block::None;
     int block_start = 0;
     bool has_shader = false, seen_kind = false, defines_brdf = false;
@@ -123,13 +163,18 @@ TranslatedLines translate_brdf_file(const std::string& path, const std::vector<s
         const int number = static_cast<int>(i + 1);
         const SourceLocation where{path, number};
         const std::string line = trim(lines[i]);
+        if (block == Block::Skipped) {
+            if (words(line) == std::vector<std::string>{"::end", skipped}) block = Block::None;
+            emit("", number);
+            continue;
+        }
         if (block == Block::Shader) {
             if (line == "::end shader") {
                 block = Block::None;
                 emit("", number);
             } else {
                 defines_brdf = defines_brdf || defines_brdf_function(lines[i]);
-                emit(lines[i], number);  // GLSL as written
+                emit(rename_reserved(lines[i], renamed), number);  // GLSL as written, but for names fxview's shaders hold
             }
             continue;
         }
@@ -139,7 +184,8 @@ TranslatedLines translate_brdf_file(const std::string& path, const std::vector<s
         }
         if (!seen_kind) {
             seen_kind = true;
-            if (line != "analytic")
+            // Only the first word counts (BRDF Explorer's files say `analytic` and sometimes more).
+            if (words(line).front() != "analytic")
                 throw EffectError(where, "a .brdf file fxview can render starts with 'analytic' (measured and image BRDFs are not supported), got '" +
                                              excerpt(line) + "'");
             // The effect's own prelude: the shared vertex stage and its uniforms.
@@ -157,6 +203,13 @@ TranslatedLines translate_brdf_file(const std::string& path, const std::vector<s
                 block = Block::Shader;
                 block_start = shader_start = number;
                 has_shader = true;
+            } else if (const auto w = words(line); block == Block::None && w.size() == 2 && w[0] == "::begin") {
+                // A section fxview does not use: skipped to its end, as BRDF Explorer skips what it does not know.
+                skipped = w[1];
+                block = Block::Skipped;
+                block_start = number;
+                warn(number, w[1] == "isFunc" ? "the importance-sampling section 'isFunc' is not used (brdf-check samples with its own strategies); skipped"
+                                              : "unknown section '" + excerpt(w[1]) + "' skipped");
             } else {
                 throw EffectError(where, "unexpected '" + excerpt(line) + "'" +
                                              (block == Block::Parameters ? " inside the parameters block (it ends with '::end parameters')" : ""));
@@ -165,15 +218,26 @@ TranslatedLines translate_brdf_file(const std::string& path, const std::vector<s
             continue;
         }
         if (block != Block::Parameters) throw EffectError(where, "text outside a '::begin parameters' or '::begin shader' block: '" + excerpt(line) + "'");
-        emit(parameter_line(words(trim(line.substr(0, line.find('#')))), where), number);  // a trailing # comment is allowed
+        std::vector<std::string> w = words(trim(line.substr(0, line.find('#'))));  // a trailing # comment is allowed
+        if (w.size() >= 2 && reserved_names().count(w[1])) {
+            warn(number, "parameter '" + w[1] + "' is called brdf_" + w[1] + " in fxview (--set brdf_" + w[1] + "=...): fxview's shaders hold that name");
+            w[1] = "brdf_" + w[1];
+        }
+        emit(parameter_line(w, where), number);
     }
     const int last = static_cast<int>(lines.size());
     if (!seen_kind) throw EffectError({path, 1}, "an empty .brdf file (it starts with 'analytic')");
     if (block == Block::Parameters) throw EffectError({path, block_start}, "'::begin parameters' without '::end parameters'");
-    if (block == Block::Shader) throw EffectError({path, block_start}, "'::begin shader' without '::end shader'");
+    if (block == Block::Shader) {  // BRDF Explorer ends the shader at the end of the file
+        warn(block_start, "'::begin shader' without '::end shader': the shader ends at the end of the file");
+        block = Block::None;
+    }
+    if (block == Block::Skipped) warn(block_start, "section '" + excerpt(skipped) + "' without '::end " + excerpt(skipped) + "': skipped to the end of the file");
     if (!has_shader) throw EffectError({path, last}, "no '::begin shader' block defining vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)");
     if (!defines_brdf)
         throw EffectError({path, shader_start}, "the shader block does not define vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)");
+    for (const std::string& name : renamed)
+        warn(shader_start, "the shader block's '" + name + "' is renamed brdf_" + name + " (fxview's shaders hold that name)");
     // The techniques that render BRDF() (effects/lib/brdf_file.glsl), after it is defined.
     emit("#include \"brdf_file.glsl\"", last);
     return out;

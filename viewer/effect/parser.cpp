@@ -588,6 +588,9 @@ Effect load_effect(const std::string& path, const LoadOptions& options) {
     effect.sources = SourceMap::load(path, options.include_dirs, effect.limits, effect.access);
     if (legacy::is_legacy_effect(effect)) legacy::load_legacy_effect(effect, options.matrix_convention);
     else Parser(effect).parse();
+    std::vector<std::string> warnings = effect.sources.warnings();  // the translated file's first
+    warnings.insert(warnings.end(), effect.warnings.begin(), effect.warnings.end());
+    effect.warnings = std::move(warnings);
     for (auto& parameter : effect.parameters)
         if (parameter.ui.items.size() == 1)
             if (const auto list = options.item_lists.find(parameter.ui.items[0]); list != options.item_lists.end())

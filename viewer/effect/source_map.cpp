@@ -138,6 +138,7 @@ void SourceMap::append_file(const std::string& path, const LoadContext& context,
     std::vector<int> origins;
     if (!included_from && is_brdf_file(path)) {
         TranslatedLines translated = translate_brdf_file(path, lines);
+        warnings_.insert(warnings_.end(), translated.warnings.begin(), translated.warnings.end());
         lines = std::move(translated.lines);
         origins = std::move(translated.origins);
     } else {

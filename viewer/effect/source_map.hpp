@@ -55,6 +55,8 @@ public:
     // into "file:line: error: ...".
     std::string map_compiler_log(const std::string& log) const;
     const std::vector<std::string>& files() const { return files_; }
+    // What a translated file (.brdf) accepted with a warning, "file:line: warning: ...".
+    const std::vector<std::string>& warnings() const { return warnings_; }
     // Whether `line` starts with "FILE:" for one of the files (a mapped compiler message).
     bool has_file_prefix(const std::string& line) const;
 
@@ -76,7 +78,7 @@ private:
     std::string text_;
     std::vector<size_t> line_starts_;
     std::vector<LineOrigin> origins_;
-    std::vector<std::string> files_;
+    std::vector<std::string> files_, warnings_;
     std::set<std::string> once_;  // canonical paths of `#pragma once` files already expanded
 };
 

@@ -105,9 +105,12 @@ void RenderSchedule::done(const Work& work, double seconds) {
     for (int r = work.y; r < work.y + work.height; ++r) pixels += tile ? std::min<double>(work.width, covered(r)) : covered(r);
     // The model follows the measurements, rising at once and falling by halves (a cheap piece must
     // not make the next one too large).
-    if (!tile) allowed_rows_ = follow(allowed_rows_, work.height, seconds, budget_used_, 1.0) + (seconds <= budget_used_ ? 1.0 : 0.0);
-    else allowed_columns_ = follow(allowed_columns_, work.width, seconds, budget_used_, kBlock);
-    if (pixels >= 1) allowed_pixels_ = follow(allowed_pixels_, pixels, seconds, budget_used_, 1.0);
+    // A piece that kept to the budget lets the next one hold at least a block more: growth by half
+    // again alone rounds back down to whole blocks from small sizes (4 columns stayed 4 for good).
+    const double more = seconds <= budget_used_ ? kBlock : 0.0;
+    if (!tile) allowed_rows_ = std::max(follow(allowed_rows_, work.height, seconds, budget_used_, 1.0), work.height + more);
+    else allowed_columns_ = std::max(follow(allowed_columns_, work.width, seconds, budget_used_, kBlock), work.width + more);
+    if (pixels >= 1) allowed_pixels_ = std::max(follow(allowed_pixels_, pixels, seconds, budget_used_, 1.0), pixels + more * work.height);
     if (pixels < 1) {
         // An "empty" piece that took longer than any piece may was not empty (the coverage estimate
         // missed something): it must not teach the model a fixed cost.
@@ -117,9 +120,12 @@ void RenderSchedule::done(const Work& work, double seconds) {
         if (seconds > 2.0 * budget_used_) coverage_.clear();
     } else {
         const double measured = std::max(seconds - fixed_, 0.0) / pixels;
-        // A tile over the background is cheap without the object being so: tiles only raise the
-        // estimate, so that the tiles a row starts with cannot make the ones over the object too wide.
-        if (tile) per_pixel_ = std::max(per_pixel_, measured);
+        // A tile over the background is cheap without the object being so: tiles raise the estimate
+        // at once but lower it only slowly (1 % a tile), so that the tiles a row starts with cannot make
+        // the ones over the object much too wide (8 background tiles: 8 % under; 2 % a tile let a disc's
+        // tiles reach 105 ms, test_ui_logic), while one slow tile (the machine busy for a moment) does
+        // not keep every later piece small for good.
+        if (tile) per_pixel_ = std::max(measured, 0.99 * per_pixel_ + 0.01 * measured);
         else per_pixel_ = per_pixel_ > 0 ? std::max(measured, 0.5 * (per_pixel_ + measured)) : measured;
     }
     picture_seconds_ += seconds;
