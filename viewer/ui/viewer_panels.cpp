@@ -105,7 +105,9 @@ void Viewer::draw_ui(int window_width, int window_height) {
     if (const auto width = panel_width_.impose(static_cast<float>(window_width))) ImGui::SetNextWindowSize(ImVec2(*width, height));
     ImGui::SetNextWindowSizeConstraints(ImVec2(std::min(240.0f * scale, window_width * 0.5f), height),
                                         ImVec2(std::max(240.0f * scale, window_width * 0.8f), height));
-    ImGui::Begin("fxview", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+    // The scroll bar always shown: a status line that makes the panel overflow must not narrow every
+    // widget under the pointer by the bar's width.
+    ImGui::Begin("fxview", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysVerticalScrollbar);
     const float panel_width = ImGui::GetWindowWidth();
     panel_width_.shown(panel_width);
     panel_shown_width_ = panel_width;
