@@ -774,6 +774,30 @@ TEST_CASE("brdf-plot writes every view at the asked size, and its CSV holds the 
         CHECK(red == doctest::Approx(0.8 / std::numbers::pi).epsilon(1e-6));
     }
     CHECK(rows == 721);
+    // Every view writes its CSV (issue 28: lobe, slice and sphere ignored --csv): Lambert's f is
+    // reflectance / π at every direction of the lobe and the slice (0 where the slice is below the surface).
+    for (const char* view : {"lobe", "slice"}) {
+        CAPTURE(view);
+        const std::string values = temp_path(std::string("view-") + view + ".csv");
+        REQUIRE(run("brdf-plot " + dir + "lambert.brdf --view " + view + " --size 64x48 --out " + temp_path("v.png") + " --csv " + values).exit_code == 0);
+        std::ifstream in(values);
+        std::string header, first;
+        std::getline(in, header);
+        std::getline(in, first);
+        CHECK(header.find(",r,g,b") != std::string::npos);
+        std::vector<double> fields;
+        std::stringstream parts(first);
+        for (std::string part; std::getline(parts, part, ',');) fields.push_back(std::stod(part));
+        REQUIRE(fields.size() == 5);
+        CHECK(fields[2] == doctest::Approx(0.8 / std::numbers::pi).epsilon(1e-6));
+    }
+    const std::string sphere_csv = temp_path("view-sphere.csv");
+    REQUIRE(run("brdf-plot " + dir + "lambert.brdf --view sphere --size 16x16 --out " + temp_path("s.exr") + " --csv " + sphere_csv).exit_code == 0);
+    CHECK(std::filesystem::file_size(sphere_csv) > 16 * 16 * 10);
+    // NaN values are not drawn, and said so.
+    const Result nan = run("brdf-plot " + dir + "explorer/nan_below_10.brdf --out " + temp_path("nan.png"));
+    CHECK(nan.exit_code == 0);
+    CHECK(nan.err.find("NaN or infinite") != std::string::npos);
     CHECK(run("brdf-plot " + dir + "lambert.brdf " + dir + "lambert.brdf --view sphere --out " + temp_path("two.png")).exit_code == 2);
     CHECK(run("brdf-plot --view polar --out " + temp_path("nothing.png")).exit_code == 2);
 

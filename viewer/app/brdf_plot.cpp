@@ -14,12 +14,40 @@ using image::Rgb;
 
 const Rgb kGrid{0.86f, 0.86f, 0.86f}, kInk{0.1f, 0.1f, 0.1f}, kMuted{0.55f, 0.55f, 0.55f};
 
+// A series' values that are NaN or infinite: not drawn, so the legend says how many.
+size_t not_finite(const BrdfSeries& s) {
+    return static_cast<size_t>(std::count_if(s.values.begin(), s.values.end(), [](double v) { return !std::isfinite(v); }));
+}
+
 void legend(Canvas& canvas, const std::vector<BrdfSeries>& series, int x, int y) {
     for (size_t i = 0; i < series.size(); ++i) {
         const int row = y + static_cast<int>(i) * 24;
         canvas.line(static_cast<float>(x), static_cast<float>(row + 6), static_cast<float>(x + 30), static_cast<float>(row + 6), image::palette(i), 3.0f);
-        canvas.text(x + 38, row, series[i].name.substr(0, 28), kInk);
+        const size_t bad = not_finite(series[i]);
+        canvas.text(x + 38, row, series[i].name.substr(0, 28) + (bad ? " (" + std::to_string(bad) + " NaN, not drawn)" : ""), kInk);
     }
+}
+
+// A title that wraps at spaces to the canvas's width; returns the y below it.
+int title(Canvas& canvas, const std::string& text, int y, Rgb colour) {
+    const int width = canvas.width() - 24;
+    std::string line;
+    size_t at = 0;
+    while (at < text.size()) {
+        size_t next = text.find(' ', at + 1);
+        if (next == std::string::npos) next = text.size();
+        const std::string word = text.substr(at, next - at);
+        if (!line.empty() && Canvas::text_width(line + word) > width) {
+            canvas.text(12, y, line, colour);
+            y += 20;
+            line = word.substr(word.find_first_not_of(' '));
+        } else {
+            line += word;
+        }
+        at = next;
+    }
+    if (!line.empty()) canvas.text(12, y, line, colour);
+    return y + 20;
 }
 
 double largest(const std::vector<BrdfSeries>& series) {
@@ -87,9 +115,9 @@ image::FloatImage polar_chart(const std::vector<BrdfSeries>& series, double inci
             canvas.line(ax, ay, bx, by, image::palette(i), 2.0f);
         }
     }
-    canvas.text(12, 10, "f(l, v) in the plane of incidence, theta_i = " + image::chart_number(incidence_degrees) + " deg" +
-                            (logarithmic ? " (log scale)" : ""), kInk);
-    legend(canvas, series, 12, 36);
+    const int below = title(canvas, "f(l, v) in the plane of incidence, theta_i = " + image::chart_number(incidence_degrees) + " deg" +
+                                        (logarithmic ? " (log scale)" : ""), 10, kInk);
+    legend(canvas, series, 12, below + 6);
     return canvas.take();
 }
 
@@ -109,8 +137,8 @@ image::FloatImage albedo_chart(const std::vector<BrdfSeries>& series, const std:
         const std::string label = std::to_string(d);
         canvas.text(static_cast<int>(px(d)) - Canvas::text_width(label) / 2, bottom + 10, label, kInk);
     }
-    // Energy conservation: no albedo above 1.
-    for (int k = 0; k < 45; k += 2) canvas.line(px(2.0 * k), py(1.0), px(2.0 * k + 2), py(1.0), Rgb{0.84f, 0.15f, 0.16f}, 1.5f);
+    // Energy conservation: no albedo above 1 (dashed in ink, so that no curve's colour hides it).
+    for (int k = 0; k < 45; k += 2) canvas.line(px(2.0 * k), py(1.0), px(2.0 * k + 2), py(1.0), kInk, 1.5f);
     canvas.line(static_cast<float>(left), static_cast<float>(bottom), static_cast<float>(right), static_cast<float>(bottom), kInk, 1.5f);
     canvas.line(static_cast<float>(left), static_cast<float>(top), static_cast<float>(left), static_cast<float>(bottom), kInk, 1.5f);
     for (size_t i = 0; i < series.size(); ++i)
@@ -119,8 +147,8 @@ image::FloatImage albedo_chart(const std::vector<BrdfSeries>& series, const std:
                         image::palette(i), 2.0f);
     const std::string x_label = "angle of incidence / deg";
     canvas.text((left + right - Canvas::text_width(x_label)) / 2, size.height - 28, x_label, kInk);
-    canvas.text(12, 10, "directional albedo (mean of R, G, B); red: 1, what the light brings", kInk);
-    legend(canvas, series, left + 20, 36);
+    const int below = title(canvas, "directional albedo (mean of R, G, B); dashed: 1, what the light brings", 10, kInk);
+    legend(canvas, series, left + 20, below + 6);
     return canvas.take();
 }
 
@@ -174,8 +202,8 @@ image::FloatImage lobe_chart(const image::FloatImage& hemisphere, const std::str
             const auto [bx, by] = surface(a, b + 1);
             canvas.line(ax, ay, bx, by, ink, 1.0f);
         }
-    canvas.text(12, 10, name + ": f over the hemisphere, theta_i " + image::chart_number(incidence_degrees) + " deg", kInk);
-    canvas.text(12, 32, "radius f / " + image::chart_number(peak) + "; light in yellow", kMuted);
+    const int below = title(canvas, name + ": f over the hemisphere, theta_i " + image::chart_number(incidence_degrees) + " deg", 10, kInk);
+    title(canvas, "radius f / " + image::chart_number(peak) + "; light in yellow", below + 2, kMuted);
     return canvas.take();
 }
 

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 
 #include "app/brdf_check.hpp"
@@ -25,6 +26,22 @@ namespace {
 constexpr int kPlaneSamples = 721;  // 180°/721 apart across the plane of incidence
 
 double mean_rgb(const float* p) { return (static_cast<double>(p[0]) + p[1] + p[2]) / 3.0; }
+
+// An image's values as CSV rows `header` + r,g,b, with the two coordinates of pixel (x, y) (y from the
+// top) that `coordinates` gives.
+void write_image_csv(const std::string& path, const image::FloatImage& image, const std::string& header,
+                     const std::function<std::pair<double, double>(int, int)>& coordinates) {
+    std::ofstream csv(path);
+    if (!csv) throw Error("cannot write " + path);
+    csv << header << ",r,g,b\n";
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const auto [a, b] = coordinates(x, y);
+            const float* p = image.pixel(x, y);
+            csv << a << "," << b << "," << p[0] << "," << p[1] << "," << p[2] << "\n";
+        }
+    std::printf("wrote %s\n", path.c_str());
+}
 
 }  // namespace
 
@@ -64,8 +81,11 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
             scene.effect.path = o->files[0];
             scene.effect.technique = o->technique;  // empty: the default (Lit for .brdf files)
             scene.effect.sets = o->sets;
-            image::write_image(o->out, render_offscreen(to_render_request(scene)));
+            const image::FloatImage sphere = render_offscreen(to_render_request(scene));
+            image::write_image(o->out, sphere);
             std::printf("wrote %s (%dx%d)\n", o->out.c_str(), size.x, size.y);
+            if (!o->csv.empty())  // the lit sphere's linear radiance per pixel
+                write_image_csv(o->csv, sphere, "x,y", [](int x, int y) { return std::pair<double, double>(x, y); });
             return 0;
         }
         if (o->view == "lobe" || o->view == "slice") {
@@ -78,9 +98,17 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
             if (o->view == "lobe") {
                 const image::FloatImage hemisphere = evaluate_brdf_hemisphere(evaluation.session(), o->incidence, 144, 60, o->phi_i);
                 image::write_image(o->out, lobe_chart(hemisphere, std::filesystem::path(o->files[0]).stem().string(), o->incidence, {size.x, size.y}));
+                if (!o->csv.empty())  // θo up from the bottom row, φo across (evaluate_brdf_hemisphere)
+                    write_image_csv(o->csv, hemisphere, "theta_o_deg,phi_o_deg", [&hemisphere](int x, int y) {
+                        return std::pair<double, double>(90.0 * (hemisphere.height - y - 0.5) / hemisphere.height, 360.0 * (x + 0.5) / hemisphere.width);
+                    });
             } else {
                 // The values themselves in EXR/PFM; in PNG scaled so that the 99th percentile is white.
                 image::FloatImage slice = evaluate_brdf_slice(evaluation.session(), o->phi_d, size.x, size.y);
+                if (!o->csv.empty())  // the values themselves, before any display scaling; θh across, θd up
+                    write_image_csv(o->csv, slice, "theta_h_deg,theta_d_deg", [&slice](int x, int y) {
+                        return std::pair<double, double>(90.0 * (x + 0.5) / slice.width, 90.0 * (slice.height - y - 0.5) / slice.height);
+                    });
                 const bool png = std::filesystem::path(o->out).extension() == ".png";
                 const float white = png ? scale_slice_for_display(slice) : 0.0f;
                 image::write_image(o->out, slice);
@@ -138,6 +166,12 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
             }
             series.push_back(std::move(s));
             rgb.push_back(std::move(values));
+        }
+        for (const BrdfSeries& s : series) {
+            const auto bad = std::count_if(s.values.begin(), s.values.end(), [](double v) { return !std::isfinite(v); });
+            if (bad > 0)
+                std::fprintf(stderr, "brdf-plot: %s: %ld of %zu values are NaN or infinite: not drawn (the legend says so)\n", s.name.c_str(),
+                             static_cast<long>(bad), s.values.size());
         }
         const ChartSize chart{size.x, size.y};
         image::write_image(o->out, o->view == "polar" ? polar_chart(series, o->incidence, o->logarithmic, chart)

@@ -68,7 +68,19 @@ Rgb palette(size_t index) {
     static const Rgb colours[] = {{0.12f, 0.47f, 0.71f}, {1.0f, 0.50f, 0.05f}, {0.17f, 0.63f, 0.17f}, {0.84f, 0.15f, 0.16f},
                                   {0.58f, 0.40f, 0.74f}, {0.55f, 0.34f, 0.29f}, {0.89f, 0.47f, 0.76f}, {0.5f, 0.5f, 0.5f},
                                   {0.74f, 0.74f, 0.13f}, {0.09f, 0.75f, 0.81f}};
-    return colours[index % (sizeof colours / sizeof colours[0])];
+    constexpr size_t count = sizeof colours / sizeof colours[0];
+    if (index < count) return colours[index];
+    // Beyond the ten: hues a golden angle apart at two lightnesses, so that no two curves share a colour.
+    const float hue = std::fmod(0.1f + 0.618034f * static_cast<float>(index), 1.0f) * 6.0f, value = index % 2 ? 0.62f : 0.85f;
+    const float f = hue - std::floor(hue), p = value * 0.3f, q = value * (1.0f - 0.7f * f), t = value * (1.0f - 0.7f * (1.0f - f));
+    switch (static_cast<int>(hue) % 6) {
+        case 0: return {value, t, p};
+        case 1: return {q, value, p};
+        case 2: return {p, value, t};
+        case 3: return {p, q, value};
+        case 4: return {t, p, value};
+        default: return {value, p, q};
+    }
 }
 
 std::string chart_number(double v) {

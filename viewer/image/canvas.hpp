@@ -23,12 +23,14 @@ public:
     void text(int x, int y, const std::string& s, Rgb c, int scale = 2);
     static int text_width(const std::string& s, int scale = 2);
     FloatImage take() { return std::move(image_); }
+    int width() const { return image_.width; }
 
 private:
     FloatImage image_;
 };
 
-// Ten distinguishable line colours (sRGB), for series 0, 1, ...
+// Distinguishable line colours (sRGB), for series 0, 1, ...: ten chosen ones, then hues a golden
+// angle apart (never the same colour twice).
 Rgb palette(size_t index);
 // A number as a chart label (%g).
 std::string chart_number(double v);
