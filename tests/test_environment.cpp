@@ -13,6 +13,7 @@
 
 #include "image/display_transform.hpp"
 #include "image/image_file.hpp"
+#include "lighting/bright_sources.hpp"
 #include "lighting/cube_map.hpp"
 #include "lighting/environment_sources.hpp"
 #include "lighting/image_based_lighting.hpp"
@@ -356,4 +357,78 @@ TEST_CASE("Radiance .hdr files: read exactly; truncated or malformed ones are er
                          temp_path("x.png"));
     CHECK(r.exit_code == 1);
     CHECK(r.err.find("cut.hdr") != std::string::npos);
+}
+
+TEST_CASE("a photographed 1-degree sun becomes a disc: the prefiltered map matches a sum over the image's own pixels") {
+    // Issue 28: a user's HDR with a small bright sun gave faceted blotches at roughness 0.2 and
+    // streaks at 0.3-0.5. An equirectangular sky of radiance 0.5 with a sun 1° across (radiance 2e4:
+    // 43 % of the map's power) at 30° elevation. The truth: for a texel direction n (n = v = r), the
+    // prefiltered value ∫ L w / ∫ w with w = D(h)/4 (n·l) summed over every pixel of the image with
+    // its exact solid angle, nothing shared with the prefiltering but the GGX formula.
+    const int width = 720, height = 360;
+    image::FloatImage sky(width, height, 4);
+    const glm::dvec3 sun = glm::normalize(glm::dvec3(0.0, std::sin(30 * kPi / 180), -std::cos(30 * kPi / 180)));  // -Z: the image's centre
+    const auto pixel_direction = [&](double px, double py) {
+        const double phi = (px / width - 0.5) * 2 * kPi, theta = py / height * kPi;  // as from_equirectangular reads it
+        return glm::dvec3(std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi));
+    };
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            float* p = sky.pixel(x, y);
+            const bool in_sun = glm::dot(pixel_direction(x + 0.5, y + 0.5), sun) > std::cos(0.5 * kPi / 180);
+            for (int c = 0; c < 3; ++c) p[c] = in_sun ? 2e4f : 0.5f;
+            p[3] = 1.0f;
+        }
+    const std::string path = temp_path("sun-sky.exr");
+    image::write_exr(path, sky);
+    const lighting::Environment environment = lighting::make_environment(path, 128);
+    REQUIRE(environment.discs.size() == 1);
+    CHECK(glm::dot(environment.discs[0].direction, sun) > std::cos(0.3 * kPi / 180));
+    double sun_power = 0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            if (sky.pixel(x, y)[1] > 1.0f)
+                sun_power += (sky.pixel(x, y)[1] - 0.5) * (std::cos(y * kPi / height) - std::cos((y + 1) * kPi / height)) * 2 * kPi / width;
+    // Taken out of the image before resampling: the disc carries the image's sun power to float
+    // rounding, and its solid angle is that of the pixels above half the peak (0.5° radius, 1.7e-4
+    // of a pixel row's rounding).
+    CHECK(environment.discs[0].radiance.g * environment.discs[0].solid_angle() == doctest::Approx(sun_power).epsilon(1e-5));
+    CHECK(environment.discs[0].angular_radius * 180 / kPi == doctest::Approx(0.5).epsilon(0.1));
+    const lighting::PrefilteredEnvironment maps = lighting::prefilter(environment, 6);
+    const auto truth = [&](const glm::dvec3& n, double alpha) {
+        double sum = 0, weight = 0;
+        for (int y = 0; y < height; ++y) {
+            const double theta0 = static_cast<double>(y) / height * kPi, theta1 = (y + 1.0) / height * kPi;
+            const double omega = (std::cos(theta0) - std::cos(theta1)) * 2 * kPi / width;
+            for (int x = 0; x < width; ++x) {
+                const glm::dvec3 l = pixel_direction(x + 0.5, y + 0.5);
+                const double nl = glm::dot(n, l);
+                if (nl <= 0) continue;
+                const double w = lighting::ggx_d(glm::dot(n, glm::normalize(n + l)), alpha) / 4 * nl * omega;
+                sum += w * sky.pixel(x, y)[1];
+                weight += w;
+            }
+        }
+        return sum / weight;
+    };
+    for (const int level : {1, 2, 3}) {  // roughness 0.2, 0.4, 0.6
+        const double roughness = level / 5.0, alpha = roughness * roughness;
+        const lighting::FloatCube& cube = maps.specular[static_cast<size_t>(level)];
+        double worst = 0;
+        int checked = 0;
+        // Texels whose lobe holds the sun: within two lobe widths of it, on the -Z face (the sun's).
+        for (int y = 0; y < cube.size; ++y)
+            for (int x = 0; x < cube.size; ++x) {
+                const glm::dvec3 n = lighting::texel_direction(5, x, y, cube.size);
+                if (std::acos(std::clamp(glm::dot(n, sun), -1.0, 1.0)) > 2.0 * alpha + 0.02) continue;
+                const double expected = truth(n, alpha);
+                ++checked;
+                worst = std::max(worst, std::abs(cube.at(5, x, y).g - expected) / expected);
+            }
+        CAPTURE(roughness);
+        REQUIRE(checked > 20);
+        // The disc's 19-point quadrature against the image's pixels of a 1° sun: measured 0.27 %,
+        // 0.02 %, 0.004 % at roughness 0.2, 0.4, 0.6 (33 %, 15 %, 11 % with the sun left in the texels).
+        CHECK(worst < 0.01);
+    }
 }

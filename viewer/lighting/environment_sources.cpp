@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "image/color_encoding.hpp"
+#include "lighting/bright_sources.hpp"
 #include "spectral/colorimetry.hpp"
 #include "spectral/generators.hpp"
 #include "texture/texture_file.hpp"
@@ -88,11 +89,26 @@ Environment make_sky(const Sky& sky, int size) {
     return environment;
 }
 
+// Finite is not enough: prefiltering and SH sum thousands of texels times weights in float, so a
+// texel near float's maximum (an EXR value of 3e38, an RGBE exponent of 255) overflows to NaN
+// pixels. The brightest real sources are far below the bound (the sun's disc: about 1.6e9 cd/m²).
+constexpr float kMaxRadiance = 1e20f;
+
+// Whether every RGB of `count` RGBA texels is a radiance the maps can hold (make_environment says
+// which is not, after resampling).
+bool finite_and_bounded(const float* rgba, size_t count) {
+    for (size_t i = 0; i < count * 4; ++i)
+        if (i % 4 != 3 && !(std::isfinite(rgba[i]) && rgba[i] >= 0.0f && rgba[i] <= kMaxRadiance)) return false;
+    return true;
+}
+
 // An equirectangular image (-Z at its centre, +Y at the top) resampled onto the cube.
-FloatCube from_equirectangular(const texture::TextureData& image, int size) {
-    const texture::TextureData rgba = texture::convert(image, texture::PixelFormat::RGBA32F);
+// Its bright small sources (a sun) are taken out into `discs` first, at the image's own resolution.
+FloatCube from_equirectangular(const texture::TextureData& image, int size, std::vector<DiscLight>& discs) {
+    texture::TextureData rgba = texture::convert(image, texture::PixelFormat::RGBA32F);
     const int width = rgba.width(), height = rgba.height();
-    const auto* texels = reinterpret_cast<const float*>(rgba.faces[0][0].bytes.data());
+    auto* texels = reinterpret_cast<float*>(rgba.faces[0][0].bytes.data());
+    if (finite_and_bounded(texels, static_cast<size_t>(width) * height)) extract_bright_sources_equirectangular(texels, width, height, discs);
     const auto at = [&](int x, int y) {
         x = ((x % width) + width) % width;
         y = std::clamp(y, 0, height - 1);
@@ -145,7 +161,7 @@ void check_float_budget(const texture::TextureData& data, std::int64_t& used, co
     check_limit(limits, "texture-bytes", used, file, "the environment's float radiance");
 }
 
-FloatCube from_files(const std::string& source, int size, const ResourceLimits& limits) {
+FloatCube from_files(const std::string& source, int size, const ResourceLimits& limits, std::vector<DiscLight>& discs) {
     const std::vector<std::string> files = split(source, ',');
     std::int64_t used = 0;
     if (files.size() == 6) {
@@ -166,7 +182,7 @@ FloatCube from_files(const std::string& source, int size, const ResourceLimits& 
     texture::TextureData data = texture::load_texture_file(source, limits);
     check_float_budget(data, used, limits, source);
     if (data.type == texture::TextureType::Cube) return from_cube(texture::convert(data, texture::PixelFormat::RGBA32F), size);
-    if (data.width() == 2 * data.height()) return from_equirectangular(data, size);
+    if (data.width() == 2 * data.height()) return from_equirectangular(data, size, discs);
     if (data.width() * 3 == data.height() * 4 || data.width() * 4 == data.height() * 3)
         return from_cube(texture::convert(texture::split_cube_cross(data), texture::PixelFormat::RGBA32F), size);
     throw Error(source + ": an environment image must be equirectangular (width twice the height) or a cube cross (4x3 or 3x4 faces); this one is " +
@@ -248,11 +264,8 @@ Environment make_environment(const std::string& source, int size, const Resource
     std::error_code error;
     if (source.find_first_of("/.,") == std::string::npos && !std::filesystem::exists(source, error))
         throw UsageError("unknown environment '" + source + "' (studio, sky, sky:ELEVATION[,CCT], furnace, none, or an image file)");
-    Environment environment{from_files(source, size, limits), {}};
-    // Finite is not enough: prefiltering and SH sum thousands of texels times weights in float, so a
-    // texel near float's maximum (an EXR value of 3e38, an RGBE exponent of 255) overflows to NaN
-    // pixels. The brightest real sources are far below the bound (the sun's disc: about 1.6e9 cd/m²).
-    constexpr float kMaxRadiance = 1e20f;
+    Environment environment;
+    environment.radiance = from_files(source, size, limits, environment.discs);
     for (const auto& face : environment.radiance.faces)
         for (const glm::vec3& texel : face) {
             if (!std::isfinite(texel.r) || !std::isfinite(texel.g) || !std::isfinite(texel.b) || texel.r < 0 || texel.g < 0 || texel.b < 0)
@@ -260,6 +273,7 @@ Environment make_environment(const std::string& source, int size, const Resource
             if (std::max({texel.r, texel.g, texel.b}) > kMaxRadiance)
                 throw Error(source + ": the environment holds radiance above 1e20, beyond what float sums of its texels can hold");
         }
+    extract_bright_sources(environment);  // a sun in cube faces (an equirectangular image's went before resampling)
     return environment;
 }
 
