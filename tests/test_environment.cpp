@@ -28,7 +28,7 @@ using fxview::test::temp_path;
 namespace {
 constexpr double kPi = std::numbers::pi;
 
-// ∫ f_ss cos over the hemisphere for F0 = 1 (GGX, Smith-Schlick), by a midpoint rule in (θ, φ):
+// ∫ f_ss cos over the hemisphere for F0 = 1 (GGX, height-correlated Smith), by a midpoint rule in (θ, φ):
 // no importance sampling, nothing shared with make_dfg_table but the BRDF's definition.
 double albedo_by_quadrature(double nv, double roughness) {
     const double alpha = roughness * roughness;
@@ -41,8 +41,9 @@ double albedo_by_quadrature(double nv, double roughness) {
             const double phi = (j + 0.5) / n_phi * kPi;  // symmetric about the plane of incidence: half, doubled
             const glm::dvec3 l(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
             const glm::dvec3 h = glm::normalize(l + v);
-            const double f = lighting::ggx_d(h.z, alpha) * lighting::smith_schlick(nv, roughness) * lighting::smith_schlick(l.z, roughness) /
-                             (4 * nv * l.z);
+            // Height-correlated Smith, written out here: 1 / (1 + Λ(v) + Λ(l)).
+            const auto lambda = [alpha](double c) { return 0.5 * (std::sqrt(1.0 + alpha * alpha * (1.0 - c * c) / (c * c)) - 1.0); };
+            const double f = lighting::ggx_d(h.z, alpha) / (1.0 + lambda(nv) + lambda(l.z)) / (4 * nv * l.z);
             sum += 2 * f * l.z * std::sin(theta) * (kPi / 2 / n_theta) * (kPi / n_phi);
         }
     }
@@ -220,8 +221,11 @@ TEST_CASE("metal presets look like their metal: hue order, mid-grey luminance, r
         CHECK(s.luma_mean < 0.8);
         CHECK(s.luma_sd > 0.05);  // a flat shade would be ~0; soft boxes and the floor reflect
         if (m.warm) {
+            // Copper's F0 has G − B = 0.10; its rim turns white by Fresnel at grazing angles (with the
+            // height-correlated masking of image-based light), so the sphere's mean keeps about half of
+            // it: 0.048 measured. 0.03 still separates warm from neutral (silver: 0.016).
             CHECK(s.mean.r > s.mean.g + 0.05);
-            CHECK(s.mean.g > s.mean.b + 0.05);
+            CHECK(s.mean.g > s.mean.b + 0.03);
         } else {
             CHECK(std::abs(s.mean.r - s.mean.b) < 0.08);
         }

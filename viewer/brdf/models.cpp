@@ -44,7 +44,8 @@ glm::dvec3 evaluate(const MetallicRoughness& model, const Directions& d) {
     const glm::dvec3 f0 = glm::mix(glm::dvec3(0.04), model.base_color, model.metallic);
     const glm::dvec3 fresnel = schlick(f0, std::max(c.vh, 0.0));
     const double alpha = model.roughness * model.roughness;
-    const double dg = ggx_distribution(c.nh, alpha) * smith_schlick_ggx(c.nv, c.nl, model.roughness);
+    const double g = model.correlated_smith ? smith_ggx_correlated(c.nv, c.nl, alpha) : smith_schlick_ggx(c.nv, c.nl, model.roughness);
+    const double dg = ggx_distribution(c.nh, alpha) * g;
     const glm::dvec3 kd = (1.0 - fresnel) * (1.0 - model.metallic);
     return kd * model.base_color / kPi + dg * fresnel / (4.0 * c.nl * c.nv);
 }

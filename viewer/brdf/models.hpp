@@ -22,6 +22,9 @@ struct MetallicRoughness {
     glm::dvec3 base_color{1.0, 0.71, 0.29};
     double metallic = 1.0;
     double roughness = 0.4;
+    // Masking: Schlick-GGX with k = (roughness + 1)²/8 (seed 004, Karis' remap for analytic lights),
+    // or height-correlated Smith with α = roughness² (image-based light, as the DFG table).
+    bool correlated_smith = false;
 };
 
 // Energy-conserving Phong (seed 001): kd/π + ks (n + 2)/(2π) (r·v)ⁿ.

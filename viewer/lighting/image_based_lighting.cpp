@@ -1,5 +1,7 @@
 #include "lighting/image_based_lighting.hpp"
 
+#include "brdf/models.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -193,8 +195,11 @@ DfgTable make_dfg_table(int size, int samples) {
                 const double vh = glm::dot(v, h);
                 const glm::dvec3 l = 2.0 * vh * h - v;
                 if (l.z <= 0.0 || vh <= 0.0) continue;
-                // f cos / pdf with pdf = D (n·h) / (4 v·h): G (v·h) / ((n·h)(n·v)).
-                const double weight = smith_schlick(nv, roughness) * smith_schlick(l.z, roughness) * vh / (h.z * nv);
+                // f cos / pdf with pdf = D (n·h) / (4 v·h): G (v·h) / ((n·h)(n·v)). G: height-correlated
+                // Smith with α = roughness², as Filament's and glTF's image-based lighting (Karis keeps his
+                // k = (roughness + 1)²/8 remap for analytic lights; with it a metal lost its grazing
+                // brightening: gold at n·v 0.05 in the furnace (1, 0.74, 0.33) instead of (1, 0.95, 0.85)).
+                const double weight = brdf::smith_ggx_correlated(l.z, nv, alpha) * vh / (h.z * nv);
                 const double fc = std::pow(1.0 - vh, 5.0);
                 a += (1.0 - fc) * weight;
                 b += fc * weight;
@@ -207,8 +212,11 @@ DfgTable make_dfg_table(int size, int samples) {
                 const glm::dvec3 l(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - u.x)));
                 g += std::pow(1.0 - std::clamp(glm::dot(v, glm::normalize(l + v)), 0.0, 1.0), 5.0);
             }
+            // Single scattering reflects at most what arrives: the samples' estimate of a smooth lobe at
+            // normal incidence (E → 1) may land 2e-4 above, which is noise.
+            const double sum = (a + b) / samples, cap = sum > 1.0 ? 1.0 / sum : 1.0;
             table.data[static_cast<size_t>(j) * size + i] =
-                glm::vec3(static_cast<float>(a / samples), static_cast<float>(b / samples), static_cast<float>(g / samples));
+                glm::vec3(static_cast<float>(cap * a / samples), static_cast<float>(cap * b / samples), static_cast<float>(g / samples));
         }
     }
     return table;

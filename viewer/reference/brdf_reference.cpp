@@ -240,7 +240,8 @@ glm::dvec3 lambert_truth(const EnvironmentLookup& environment, const brdf::Direc
 }
 
 glm::dvec3 pbr_truth(const EnvironmentLookup& environment, const brdf::Directions& d, const ReferenceContext& c, unsigned seed) {
-    const brdf::MetallicRoughness model = pbr(c);
+    brdf::MetallicRoughness model = pbr(c);
+    model.correlated_smith = true;  // under image-based light the BRDF's masking is the DFG table's
     const bool compensation = c.number("EnergyCompensation") != 0.0;
     const auto f = [&](const glm::dvec3& l) {
         brdf::Directions at = environment_facing(d);
