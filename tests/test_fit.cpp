@@ -237,7 +237,10 @@ TEST_CASE("MERL files are fitted at full density: every measured bin at its cent
         const double lobe = fit::ashikhmin_lobe(l, v, 120.0);
         return std::array<double, 3>{cd[0] / kPi + cs[0] * lobe, cd[1] / kPi + cs[1] * lobe, cd[2] / kPi + cs[2] * lobe};
     });
+    // A valid table's bins below the horizon are outside the domain, not gaps: no warning for them
+    // (issue 28: every valid MERL file warned about its negative samples).
     const size_t unmeasured_before = fit::observations(model, 75.0).masked;
+    CHECK(unmeasured_before == 0);
     const size_t bins = 90 * 90 * 180;
     for (size_t i = 0; i < bins; i += 97) model.data[i] = -1.0;  // a sensor's gaps, in red
     const fit::Observations data = fit::observations(model, 75.0);
@@ -295,4 +298,17 @@ TEST_CASE("the fit preview puts the mirror side in each panel's centre, signs th
     const float* right = preview.image.pixel(2 * (panel + 1) + panel - 1, preview.image.height - 1);
     CHECK(left[2] == 1.0f);
     CHECK(right[0] == 1.0f);
+}
+
+TEST_CASE("samples with the camera at the horizon are left out even at --limit 90") {
+    // Issue 28: with --limit 90 the θo = 90° row of a grid (values to 3e32 for 1/(n·v) models)
+    // dominated the fit. Light and camera at the horizon count as outside the limit.
+    const fit::BrdfGrid grid = fit::uniform_grid(3, 5, 7);  // θi and θo reach 90°
+    const fit::Observations data = fit::observations(grid, 90.0);
+    REQUIRE(!data.samples.empty());
+    for (const fit::Observation& o : data.samples) {
+        CHECK(o.l.z > 1e-9);
+        CHECK(o.v.z > 1e-9);
+    }
+    CHECK(data.samples.size() + data.masked + data.outside_limit == data.total);
 }

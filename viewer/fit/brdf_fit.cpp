@@ -300,8 +300,10 @@ Observations observations(const BrdfGrid& grid, double limit_deg) {
         for (size_t o = 0; o < grid.theta_out.size(); ++o)
             for (size_t p = 0; p < grid.phi_out.size(); ++p) {
                 const double weight = w[o * grid.phi_out.size() + p];
-                // Light at the horizon: weight cos θi = 0, and the lobe's max(n·l, n·v) may be 0 too (0 · ∞).
-                if (grid.theta_in[i] > limit_deg || l.z < 1e-9 || weight <= 0) {
+                // Light or camera at the horizon: weight cos θi = 0, and the lobe's max(n·l, n·v) may be 0
+                // too (0 · ∞); a camera at θo = 90° sees 1/(n·v) terms of 1e32 (`--limit 90` let them
+                // dominate the fit).
+                if (grid.theta_in[i] > limit_deg || l.z < 1e-9 || grid.camera(o, p).z < 1e-9 || weight <= 0) {
                     ++data.outside_limit;
                     continue;
                 }
@@ -331,12 +333,14 @@ Observations observations(const MerlBrdf& merl, double limit_deg) {
             for (int p = 0; p < kMerlPhiD; ++p) {
                 const BinDirections b = merl_bin_centre(h, d, p);
                 const std::array<double, 3> value = merl.bin(h, d, p);
-                if (value[0] < 0 || value[1] < 0 || value[2] < 0) {
-                    ++data.masked;
-                    continue;
-                }
+                // Bins below the horizon hold the database's negative "no data" marker in every valid
+                // file: outside the domain, not gaps worth a warning. Only negative bins above it are.
                 if (b.l.z < limit_cos || b.v.z < limit_cos || b.l.z < 1e-9 || b.v.z < 1e-9) {
                     ++data.outside_limit;
+                    continue;
+                }
+                if (value[0] < 0 || value[1] < 0 || value[2] < 0) {
+                    ++data.masked;
                     continue;
                 }
                 const double measure = 4.0 * std::cos(b.theta_diff) * std::sin(b.theta_half) * std::sin(b.theta_diff) * d_theta_h *
@@ -373,7 +377,7 @@ FitResult fit_brdf(const Observations& observed, const FitOptions& options) {
     result.samples_masked = observed.masked;
     if (observed.masked > 0)
         result.warnings.push_back(std::to_string(observed.masked) + " of " + std::to_string(observed.total) +
-                                  " samples are negative (unmeasured, or below the horizon in a tabulated file) and left out");
+                                  " samples inside the limit angle are negative (unmeasured) and left out");
     if (options.clear_coat_index > 0) {
         char text[240];
         std::snprintf(text, sizeof text,

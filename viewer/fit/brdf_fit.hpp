@@ -120,8 +120,8 @@ struct Observation {
 struct Observations {
     std::vector<Observation> samples;  // the ones fitted
     size_t total = 0;                  // samples in the data
-    size_t masked = 0;                 // unmeasured (negative in a MERL file): counted, never fitted
-    size_t outside_limit = 0;          // beyond the limit angle or at the horizon
+    size_t masked = 0;                 // unmeasured (negative) inside the limit angle: counted, warned, never fitted
+    size_t outside_limit = 0;          // beyond the limit angle, at or below the horizon (MERL's negative markers there)
 };
 
 // A grid: the thesis' weights (camera solid angle × cos θi).
