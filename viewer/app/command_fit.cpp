@@ -64,12 +64,12 @@ void write_ranking_csv(const std::vector<fit::FitResult>& results, const std::st
     create_parent(path);
     std::ofstream out(path);
     if (!out) throw Error(path + ": cannot write");
-    out << "rank,model,weighted_cost,weighted_rms,error_rgb,converged,parameters\n";
+    out << "rank,model,weighted_cost,robust_objective,weighted_rms,error_rgb,converged,parameters\n";
     for (size_t i = 0; i < results.size(); ++i) {
         const fit::FitResult& r = results[i];
         std::string parameters;
         for (const fit::FittedParameter& p : r.parameters) parameters += (parameters.empty() ? "" : " ") + p.name + "=" + join(p.values);
-        out << i + 1 << ',' << r.model << ',' << join({r.cost}) << ',' << join({r.weighted_rms}) << ',' << join({r.error_rgb}) << ','
+        out << i + 1 << ',' << r.model << ',' << join({r.cost}) << ',' << join({r.objective}) << ',' << join({r.weighted_rms}) << ',' << join({r.error_rgb}) << ','
             << (r.converged ? "yes" : "no") << ",\"" << parameters << "\"\n";
     }
     if (!out) throw Error(path + ": write failed");
@@ -93,7 +93,7 @@ nlohmann::json result_json(const fit::FitResult& r) {
                        {"error_rgb", r.error_rgb}, {"weighted_rms", r.weighted_rms},
                        {"solver", r.solver}, {"stop_reason", r.stop_reason}, {"converged", r.converged},
                        {"weighted_cost", r.cost}, {"warnings", r.warnings},
-                       {"residual", r.residual}, {"loss", r.loss}, {"loss_scale", r.loss_scale_used}, {"reweightings", r.reweightings}};
+                       {"residual", r.residual}, {"loss", r.loss}, {"loss_scale", r.loss_scale_used}, {"objective", r.objective}, {"reweightings", r.reweightings}};
     // The thesis' model keeps its own names and renderer form (eq. 4.23/4.24); the thesis solver its stage 1.
     if (r.model == fit::kDefaultModel)
         out.update({{"ns", r.ns}, {"cd", r.cd}, {"cs", r.cs}, {"mono_cd", r.mono_cd}, {"mono_cs", r.mono_cs}, {"error_mono", r.error_mono},

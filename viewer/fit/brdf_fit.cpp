@@ -166,6 +166,14 @@ void run_global(const FitModel& model, const FitData& data, const FitOptions& op
 }
 
 // The robust weight ω(r) of a residual r at scale δ: ψ(r)/r of the loss.
+// ρ of a loss (Huber: r²/2 inside δ, δ(|r| − δ/2) beyond; Cauchy: δ²/2 ln(1 + (r/δ)²); squared: r²/2).
+double robust_rho(Loss loss, double r, double scale) {
+    const double a = std::abs(r);
+    if (loss == Loss::Huber) return a <= scale ? 0.5 * r * r : scale * (a - 0.5 * scale);
+    if (loss == Loss::Cauchy) return 0.5 * scale * scale * std::log1p((r / scale) * (r / scale));
+    return 0.5 * r * r;
+}
+
 double robust_weight(Loss loss, double r, double scale) {
     const double t = std::abs(r) / scale;
     if (loss == Loss::Huber) return t <= 1 ? 1.0 : 1.0 / t;
@@ -248,6 +256,18 @@ void run_reweighted(const FitModel& model, const FitData& data, const FitOptions
     result.loss_scale_used = options.loss == Loss::Squared ? 0.0 : scale;
     // The cost of the problem solved: transformed residuals with the final robust weights.
     result.cost = separable_cost(model, robust, transform, result.shape, result.cd, result.cs);
+    // And the objective itself, Σ ρ(r_j) with r_j = w_j √(mean over RGB of the transformed residual²):
+    // what a robust fit minimises, comparable between models fitted with the same δ.
+    result.objective = 0;
+    for (size_t j = 0; j < data.values.size(); ++j) {
+        const auto f = model.evaluate(data.geometry[j], result.cd, result.cs, result.shape);
+        double sum = 0;
+        for (size_t c = 0; c < 3; ++c) {
+            const double r = transform.value(data.values[j][c]) - transform.value(f[c]);
+            sum += r * r;
+        }
+        result.objective += robust_rho(options.loss, data.weights[j] * std::sqrt(sum / 3.0), options.loss == Loss::Squared ? 1.0 : scale);
+    }
 }
 
 // The clear coat of eq. 4.20: base_new = base / (1 − F(θi)), F the unpolarised Fresnel reflectance
@@ -287,71 +307,6 @@ void validate(const FitOptions& options) {
         throw UsageError("fit: the clear coat's refractive index must lie in (1, 4] (0: no coat), not " + std::to_string(options.clear_coat_index));
     if (options.solver == Solver::Thesis && (options.residual != Residual::Linear || options.loss != Loss::Squared))
         throw UsageError("fit: the thesis solver fits the linear residual by least squares only (use the global solver)");
-}
-
-Observations observations(const BrdfGrid& grid, double limit_deg) {
-    const std::vector<double> w = solid_angle_weights(grid, limit_deg);
-    double sum = 0;
-    for (double x : w) sum += x;
-    Observations data;
-    data.total = grid.size();
-    for (size_t i = 0; i < grid.theta_in.size(); ++i) {
-        const glm::dvec3 l = grid.light(i);
-        for (size_t o = 0; o < grid.theta_out.size(); ++o)
-            for (size_t p = 0; p < grid.phi_out.size(); ++p) {
-                const double weight = w[o * grid.phi_out.size() + p];
-                // Light or camera at the horizon: weight cos θi = 0, and the lobe's max(n·l, n·v) may be 0
-                // too (0 · ∞); a camera at θo = 90° sees 1/(n·v) terms of 1e32 (`--limit 90` let them
-                // dominate the fit).
-                if (grid.theta_in[i] > limit_deg || l.z < 1e-9 || grid.camera(o, p).z < 1e-9 || weight <= 0) {
-                    ++data.outside_limit;
-                    continue;
-                }
-                const std::array<double, 3>& value = grid.values[grid.index(i, o, p)];
-                if (value[0] < 0 || value[1] < 0 || value[2] < 0) {  // as in MERL files: not a measurement, left out and counted
-                    ++data.masked;
-                    continue;
-                }
-                data.samples.push_back({l, grid.camera(o, p), weight * l.z / sum, value});
-            }
-    }
-    return data;
-}
-
-Observations observations(const MerlBrdf& merl, double limit_deg) {
-    // Every bin at its centre: θh = ((h + ½)/90)² · 90° (the table's square-root index), θd and φd
-    // linear, φh = 0 (isotropic). Its measure in (ωi, ωo) is 4 cos θd sin θh sin θd dθh dθd dφd
-    // (Rusinkiewicz's Jacobian, dφh integrated); times cos θi as in eq. 4.25.
-    const double limit_cos = std::cos(limit_deg * kPi / 180.0) - 1e-12;
-    Observations data;
-    data.total = static_cast<size_t>(kMerlThetaH) * kMerlThetaD * kMerlPhiD;
-    data.samples.reserve(data.total);
-    double sum = 0;
-    for (int h = 0; h < kMerlThetaH; ++h) {
-        const double d_theta_h = (2.0 * h + 1.0) / (kMerlThetaH * kMerlThetaH) * kPi / 2;
-        for (int d = 0; d < kMerlThetaD; ++d)
-            for (int p = 0; p < kMerlPhiD; ++p) {
-                const BinDirections b = merl_bin_centre(h, d, p);
-                const std::array<double, 3> value = merl.bin(h, d, p);
-                // Bins below the horizon hold the database's negative "no data" marker in every valid
-                // file: outside the domain, not gaps worth a warning. Only negative bins above it are.
-                if (b.l.z < limit_cos || b.v.z < limit_cos || b.l.z < 1e-9 || b.v.z < 1e-9) {
-                    ++data.outside_limit;
-                    continue;
-                }
-                if (value[0] < 0 || value[1] < 0 || value[2] < 0) {
-                    ++data.masked;
-                    continue;
-                }
-                const double measure = 4.0 * std::cos(b.theta_diff) * std::sin(b.theta_half) * std::sin(b.theta_diff) * d_theta_h *
-                                       (kPi / 2 / kMerlThetaD) * (kPi / kMerlPhiD);
-                sum += measure * b.l.z;
-                data.samples.push_back({b.l, b.v, measure * b.l.z, value});
-            }
-    }
-    // The weights sum to 1: a cost does not grow with the number of bins.
-    for (Observation& o : data.samples) o.weight /= sum;
-    return data;
 }
 
 FitResult fit_brdf(const BrdfGrid& measured, const FitOptions& options) {
@@ -455,19 +410,25 @@ FitResult fit_brdf(const Observations& observed, const FitOptions& options) {
 
 std::vector<FitResult> fit_all_models(const Observations& data, const FitOptions& options, bool isotropic_data) {
     std::vector<FitResult> results;
+    const bool robust = options.solver == Solver::Global && options.loss != Loss::Squared;
+    FitOptions shared = options;
     for (const std::string& name : model_names()) {
         if (isotropic_data && find_model(name)->anisotropic()) continue;
         if (options.solver == Solver::Thesis && name != kDefaultModel) continue;
-        FitOptions one = options;
+        FitOptions one = shared;
         one.model = name;
         results.push_back(fit_brdf(data, one));
+        // One robust scale δ for every model (the first's, from its least-squares residuals unless
+        // given): models ranked by Σ ρ with different δ would be ranked by different objectives.
+        if (robust && !(shared.loss_scale > 0)) shared.loss_scale = results.back().loss_scale_used;
     }
-    // Best cost first; costs equal to rounding (two exact fits of synthetic data) rank the model with
-    // fewer shape parameters first.
-    std::stable_sort(results.begin(), results.end(), [](const FitResult& a, const FitResult& b) {
-        const double tie = 1e-9 * std::max(a.cost, b.cost) + 1e-24;
-        if (std::abs(a.cost - b.cost) <= tie) return a.shape.size() < b.shape.size();
-        return a.cost < b.cost;
+    // Best first by what was minimised (Σ ρ for a robust loss, the weighted cost otherwise); equal to
+    // rounding (two exact fits of synthetic data): the model with fewer shape parameters first.
+    const auto measure = [robust](const FitResult& r) { return robust ? r.objective : r.cost; };
+    std::stable_sort(results.begin(), results.end(), [&measure](const FitResult& a, const FitResult& b) {
+        const double tie = 1e-9 * std::max(measure(a), measure(b)) + 1e-24;
+        if (std::abs(measure(a) - measure(b)) <= tie) return a.shape.size() < b.shape.size();
+        return measure(a) < measure(b);
     });
     return results;
 }

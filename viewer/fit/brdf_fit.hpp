@@ -101,6 +101,8 @@ struct FitResult {
     bool converged = true;
     std::string residual = "linear", loss = "squared";
     double loss_scale_used = 0;  // robust losses: the scale applied
+    // Robust losses: the objective minimised, Σ ρ(w_j |r_j|) (brdf_fit.cpp); what --model all ranks by.
+    double objective = 0;
     int reweightings = 0;        // iteratively reweighted least squares: the outer iterations
     std::vector<std::string> warnings;  // parameters at a bound, a stall, a model outside its assumptions
 };
