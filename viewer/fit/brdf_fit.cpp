@@ -190,6 +190,21 @@ const char* loss_name(Loss l) { return l == Loss::Huber ? "Huber" : l == Loss::C
 // step: the compressed problem has no linear structure to search globally). A robust loss is
 // iteratively reweighted least squares: each round sets ω_j from the current residuals and solves
 // again with weights w_j ω_j^½, until no parameter moves by more than 1e-5 of itself.
+// Each direction's residual for the robust loss: w_j √(mean over RGB of the transformed residual²).
+std::vector<double> direction_residuals(const FitModel& model, const FitData& data, const ResidualTransform& transform, const FitResult& at) {
+    std::vector<double> residuals(data.values.size());
+    for (size_t j = 0; j < data.values.size(); ++j) {
+        const auto f = model.evaluate(data.geometry[j], at.cd, at.cs, at.shape);
+        double sum = 0;
+        for (size_t c = 0; c < 3; ++c) {
+            const double r = transform.value(data.values[j][c]) - transform.value(f[c]);
+            sum += r * r;
+        }
+        residuals[j] = data.weights[j] * std::sqrt(sum / 3.0);
+    }
+    return residuals;
+}
+
 void run_reweighted(const FitModel& model, const FitData& data, const FitOptions& options, FitResult& result) {
     double mean = 0;
     for (const auto& y : data.values) mean += mono(y);
@@ -204,16 +219,7 @@ void run_reweighted(const FitModel& model, const FitData& data, const FitOptions
     const int rounds = options.loss == Loss::Squared ? 1 : 300;  // the reweighting converges linearly: Cauchy on poorly fitting data needs ~200
     for (int round = 1; round <= rounds && !settled; ++round) {
         if (options.loss != Loss::Squared) {
-            std::vector<double> residuals(data.values.size());
-            for (size_t j = 0; j < data.values.size(); ++j) {
-                const auto f = model.evaluate(data.geometry[j], result.cd, result.cs, result.shape);
-                double sum = 0;
-                for (size_t c = 0; c < 3; ++c) {
-                    const double r = transform.value(data.values[j][c]) - transform.value(f[c]);
-                    sum += r * r;
-                }
-                residuals[j] = data.weights[j] * std::sqrt(sum / 3.0);
-            }
+            const std::vector<double> residuals = direction_residuals(model, data, transform, result);
             if (!(scale > 0)) {  // Huber's 1.345 σ, σ from the median absolute residual of the start
                 std::vector<double> sorted = residuals;
                 std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
@@ -259,15 +265,8 @@ void run_reweighted(const FitModel& model, const FitData& data, const FitOptions
     // And the objective itself, Σ ρ(r_j) with r_j = w_j √(mean over RGB of the transformed residual²):
     // what a robust fit minimises, comparable between models fitted with the same δ.
     result.objective = 0;
-    for (size_t j = 0; j < data.values.size(); ++j) {
-        const auto f = model.evaluate(data.geometry[j], result.cd, result.cs, result.shape);
-        double sum = 0;
-        for (size_t c = 0; c < 3; ++c) {
-            const double r = transform.value(data.values[j][c]) - transform.value(f[c]);
-            sum += r * r;
-        }
-        result.objective += robust_rho(options.loss, data.weights[j] * std::sqrt(sum / 3.0), options.loss == Loss::Squared ? 1.0 : scale);
-    }
+    for (const double r : direction_residuals(model, data, transform, result))
+        result.objective += robust_rho(options.loss, r, options.loss == Loss::Squared ? 1.0 : scale);
 }
 
 // The clear coat of eq. 4.20: base_new = base / (1 − F(θi)), F the unpolarised Fresnel reflectance
