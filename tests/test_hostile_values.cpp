@@ -203,7 +203,7 @@ TEST_CASE("negative samples of a grid are left out and counted, as MERL's are") 
     write(dir + "/negative.csv", text);
     const Result r = run("fit " + dir + "/negative.csv");
     CHECK(has(r.err, "1 of "));
-    CHECK(has(r.err, "samples are negative"));
+    CHECK(has(r.err, "are negative (unmeasured)"));
 }
 
 TEST_CASE("docs/preset.schema.json and fxview agree: every scene key it lists loads, a key it does not is refused") {

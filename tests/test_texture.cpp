@@ -101,7 +101,9 @@ TEST_CASE("PNG, BMP and TGA load bit-exact; JPEG within its loss") {
 }
 
 TEST_CASE("HDR and EXR load as 32-bit float") {
-    // RGBE stores a shared exponent and 8-bit mantissas: (1, 0.5, 0.25) is exact.
+    // RGBE stores a shared exponent and 8-bit mantissas, decoded as Radiance's colr_color() does, in
+    // the middle of the mantissa's step: (4, 2, 1) is stored as mantissas (128, 64, 32) at 2^-5 and
+    // reads (128.5, 64.5, 32.5) / 32, exactly in float.
     const float hdr_pixels[2 * 1 * 3] = {1.0f, 0.5f, 0.25f, 4.0f, 2.0f, 1.0f};
     const std::string hdr = temp_path("pixels.hdr");
     REQUIRE(stbi_write_hdr(hdr.c_str(), 2, 1, 3, hdr_pixels));
@@ -109,9 +111,9 @@ TEST_CASE("HDR and EXR load as 32-bit float") {
     CHECK(h.format == PixelFormat::RGBA32F);
     float rgba[4];
     read_texel(h, 0, 0, 1, 0, rgba);
-    CHECK(rgba[0] == 4.0f);
-    CHECK(rgba[1] == 2.0f);
-    CHECK(rgba[2] == 1.0f);
+    CHECK(rgba[0] == 128.5f / 32);
+    CHECK(rgba[1] == 64.5f / 32);
+    CHECK(rgba[2] == 32.5f / 32);
     image::FloatImage exr_image(2, 2, 4);
     for (size_t i = 0; i < exr_image.data.size(); ++i) exr_image.data[i] = 0.1f * static_cast<float>(i) - 0.3f;
     const std::string exr = temp_path("texture.exr");
