@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "image/canvas.hpp"
+#include "image/color_encoding.hpp"
 
 namespace fxview::app {
 namespace {
@@ -204,6 +206,46 @@ image::FloatImage lobe_chart(const image::FloatImage& hemisphere, const std::str
         }
     const int below = title(canvas, name + ": f over the hemisphere, theta_i " + image::chart_number(incidence_degrees) + " deg", 10, kInk);
     title(canvas, "radius f / " + image::chart_number(peak) + "; light in yellow", below + 2, kMuted);
+    return canvas.take();
+}
+
+image::FloatImage slice_chart(const image::FloatImage& scaled, float white, double phi_d_degrees, ChartSize size) {
+    Canvas canvas(size.width, size.height);
+    const int left = kSliceMargins.left, top = kSliceMargins.top;
+    const int right = left + scaled.width, bottom = top + scaled.height;
+    // The slice itself: its linear values (1 = white) drawn as they are.
+    for (int y = 0; y < scaled.height; ++y)
+        for (int x = 0; x < scaled.width; ++x) {
+            const float* p = scaled.pixel(x, y);
+            const auto encode = [](float v) { return image::srgb_encode(std::clamp(std::isfinite(v) ? v : 0.0f, 0.0f, 1.0f)); };
+            canvas.put(left + x, top + y, Rgb{encode(p[0]), encode(p[1]), encode(p[2])}, 1.0f);
+        }
+    // Axes: θh across, θd up, ticks every 15°.
+    for (int d = 0; d <= 90; d += 15) {
+        const float x = static_cast<float>(left + d / 90.0 * scaled.width), y = static_cast<float>(bottom - d / 90.0 * scaled.height);
+        canvas.line(x, static_cast<float>(bottom), x, static_cast<float>(bottom + 5), kInk, 1.0f);
+        canvas.line(static_cast<float>(left - 5), y, static_cast<float>(left), y, kInk, 1.0f);
+        const std::string label = std::to_string(d);
+        canvas.text(static_cast<int>(x) - Canvas::text_width(label) / 2, bottom + 8, label, kInk);
+        canvas.text(left - 8 - Canvas::text_width(label), static_cast<int>(y) - 6, label, kInk);
+    }
+    canvas.text((left + right - Canvas::text_width("theta_h / deg")) / 2, bottom + 26, "theta_h / deg", kInk);
+    canvas.text(4, top - 20, "theta_d / deg", kInk);
+    // The colour bar: 0 at the bottom to `white` at the top.
+    const int bar = right + 20;
+    for (int y = top; y < bottom; ++y) {
+        const float v = image::srgb_encode(static_cast<float>(bottom - y) / static_cast<float>(bottom - top));
+        canvas.rect(bar, y, bar + 16, y + 1, Rgb{v, v, v});
+    }
+    for (const double t : {0.0, 0.5, 1.0}) {
+        const int y = static_cast<int>(bottom - t * (bottom - top));
+        char label[32];
+        std::snprintf(label, sizeof label, "%.3g", t * white);
+        canvas.text(bar + 20, y - 6, label, kInk);
+    }
+    char caption[96];
+    std::snprintf(caption, sizeof caption, "f at phi_d = %g deg", phi_d_degrees);  // the scale's meaning: on stdout and in the docs
+    title(canvas, caption, 4, kInk);
     return canvas.take();
 }
 

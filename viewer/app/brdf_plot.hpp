@@ -30,5 +30,12 @@ image::FloatImage lobe_chart(const image::FloatImage& hemisphere, const std::str
 // Rusinkiewicz's slice (evaluate_brdf_slice) scaled for an 8-bit image: the 99th percentile of the
 // green channel becomes white; returns that value (0 when the slice is black, left unscaled).
 float scale_slice_for_display(image::FloatImage& slice);
+// The margins of slice_chart around the slice (the slice drawn is the chart size less them).
+struct SliceMargins {
+    int left = 56, top = 48, right = 100, bottom = 46;
+};
+inline constexpr SliceMargins kSliceMargins{};
+// A scaled slice in a chart of `size`: θh and θd axes in degrees, a colour bar from 0 to `white`.
+image::FloatImage slice_chart(const image::FloatImage& scaled, float white, double phi_d_degrees, ChartSize size);
 
 }  // namespace fxview::app

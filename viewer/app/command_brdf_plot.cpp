@@ -104,14 +104,19 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
                     });
             } else {
                 // The values themselves in EXR/PFM; in PNG scaled so that the 99th percentile is white.
-                image::FloatImage slice = evaluate_brdf_slice(evaluation.session(), o->phi_d, size.x, size.y);
+                // A PNG is a chart (axes, colour bar) around the slice; EXR/PFM hold f itself at --size.
+                const bool png = std::filesystem::path(o->out).extension() == ".png";
+                const int width = png ? std::max(16, size.x - kSliceMargins.left - kSliceMargins.right) : size.x;
+                const int height = png ? std::max(16, size.y - kSliceMargins.top - kSliceMargins.bottom) : size.y;
+                image::FloatImage slice = evaluate_brdf_slice(evaluation.session(), o->phi_d, width, height);
                 if (!o->csv.empty())  // the values themselves, before any display scaling; θh across, θd up
                     write_image_csv(o->csv, slice, "theta_h_deg,theta_d_deg", [&slice](int x, int y) {
                         return std::pair<double, double>(90.0 * (x + 0.5) / slice.width, 90.0 * (slice.height - y - 0.5) / slice.height);
                     });
-                const bool png = std::filesystem::path(o->out).extension() == ".png";
                 const float white = png ? scale_slice_for_display(slice) : 0.0f;
-                image::write_image(o->out, slice);
+                image::write_image(o->out, png ? slice_chart(slice, white, o->phi_d, {width + kSliceMargins.left + kSliceMargins.right,
+                                                                                       height + kSliceMargins.top + kSliceMargins.bottom})
+                                               : slice);
                 if (png) std::printf("slice at phi_d = %g deg: theta_h 0-90 deg across, theta_d 90 (top) to 0 deg; white = f of %g\n", o->phi_d, white);
             }
             std::printf("wrote %s (%dx%d)\n", o->out.c_str(), size.x, size.y);
