@@ -123,6 +123,10 @@ CommandRunner add_compare_command(CLI::App& app) {
                                                {"mean_delta_e2000", r.ground_truth->mean_delta_e},
                                                {"p95_delta_e2000", r.ground_truth->p95_delta_e},
                                                {"max_delta_e2000", r.ground_truth->max_delta_e},
+                                               {"noise_mean_delta_e2000", r.ground_truth->mean_noise_delta_e},
+                                               {"noise_p95_delta_e2000", r.ground_truth->p95_noise_delta_e},
+                                               {"pixels_beyond_noise", r.ground_truth->pixels_beyond_noise},
+                                               {"mean_delta_e2000_beyond_noise", r.ground_truth->mean_delta_e_beyond_noise},
                                                {"worst_pixel", {{"x", r.ground_truth->worst_x}, {"y", r.ground_truth->worst_y},
                                                                 {"reference", r.ground_truth->worst_reference}, {"truth", r.ground_truth->worst_truth}}}};
                 } else {
@@ -141,6 +145,11 @@ CommandRunner add_compare_command(CLI::App& app) {
                     std::printf("%-20s approximation against the Monte Carlo integral: CIEDE2000 mean %.3g, 95th percentile %.3g, max %.3g at (%d, %d)\n",
                                 "", r.ground_truth->mean_delta_e, r.ground_truth->p95_delta_e, r.ground_truth->max_delta_e, r.ground_truth->worst_x,
                                 r.ground_truth->worst_y);
+                if (r.ground_truth)
+                    std::printf("%-20s the integral's own noise (two estimates): CIEDE2000 mean %.3g, 95th percentile %.3g; errors beyond twice "
+                                "it at %ld of %ld pixels, mean %.3g there\n",
+                                "", r.ground_truth->mean_noise_delta_e, r.ground_truth->p95_noise_delta_e, r.ground_truth->pixels_beyond_noise,
+                                r.ground_truth->pixels, r.ground_truth->mean_delta_e_beyond_noise);
                 else if (options->ground_truth)
                     std::printf("%-20s exact up to float rounding: no approximation to measure (or no environment)\n", "");
             }

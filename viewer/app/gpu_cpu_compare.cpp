@@ -1,6 +1,7 @@
 #include "app/gpu_cpu_compare.hpp"
 
 #include <algorithm>
+#include <tuple>
 #include <atomic>
 #include <cmath>
 #include <exception>
@@ -44,35 +45,56 @@ spectral::Vec3 radiance_to_lab(const std::array<double, 4>& rgb) {
     return spectral::xyz_to_lab(xyz, {0.95047, 1.0, 1.08883});
 }
 
-template <typename PixelPair>
-CompareResult::GroundTruth judge_ground_truth(int width, int height, const PixelPair& pair_at) {
+// Judges the approximation against two independent Monte Carlo estimates of its integral: the
+// error against their mean, and the estimate's own noise, half their difference (the mean of two
+// equal estimates is off by about half of what separates them); an error counts as beyond the noise
+// where it exceeds twice it.
+template <typename PixelTriple>
+CompareResult::GroundTruth judge_ground_truth(int width, int height, const PixelTriple& at) {
     CompareResult::GroundTruth truth;
     truth.heat_map = image::FloatImage(width, height, 4);
-    std::vector<double> errors;
+    std::vector<double> errors, noises;
+    double beyond_sum = 0;
+    long beyond = 0;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             float* heat_pixel = truth.heat_map.pixel(x, y);
             heat_pixel[3] = 1.0f;
-            const auto pair = pair_at(x, y);
-            if (!pair) continue;
-            const double delta_e = spectral::delta_e_2000(radiance_to_lab(pair->first), radiance_to_lab(pair->second));
+            const auto pixel = at(x, y);
+            if (!pixel) continue;
+            const auto& [reference, first, second] = *pixel;
+            std::array<double, 4> mean{};
+            for (size_t c = 0; c < 4; ++c) mean[c] = 0.5 * (first[c] + second[c]);
+            const double delta_e = spectral::delta_e_2000(radiance_to_lab(reference), radiance_to_lab(mean));
+            const double noise = 0.5 * spectral::delta_e_2000(radiance_to_lab(first), radiance_to_lab(second));
             errors.push_back(delta_e);
+            noises.push_back(noise);
+            if (delta_e > 2.0 * noise) {
+                ++beyond;
+                beyond_sum += delta_e;
+            }
             if (delta_e > truth.max_delta_e || truth.worst_x < 0) {
                 truth.max_delta_e = delta_e;
                 truth.worst_x = x;
                 truth.worst_y = y;
-                truth.worst_reference = {pair->first[0], pair->first[1], pair->first[2]};
-                truth.worst_truth = {pair->second[0], pair->second[1], pair->second[2]};
+                truth.worst_reference = {reference[0], reference[1], reference[2]};
+                truth.worst_truth = {mean[0], mean[1], mean[2]};
             }
             const auto colour = heat(delta_e / 2.0);
             std::copy(colour.begin(), colour.end(), heat_pixel);
         }
     truth.pixels = static_cast<long>(errors.size());
     if (errors.empty()) return truth;
-    for (const double e : errors) truth.mean_delta_e += e / static_cast<double>(errors.size());
-    const auto p95 = errors.begin() + static_cast<std::ptrdiff_t>(errors.size() * 95 / 100);
-    std::nth_element(errors.begin(), p95, errors.end());
-    truth.p95_delta_e = *p95;
+    const auto mean_and_p95 = [](std::vector<double> values, double& mean, double& p95) {
+        for (const double e : values) mean += e / static_cast<double>(values.size());
+        const auto at95 = values.begin() + static_cast<std::ptrdiff_t>(values.size() * 95 / 100);
+        std::nth_element(values.begin(), at95, values.end());
+        p95 = *at95;
+    };
+    mean_and_p95(errors, truth.mean_delta_e, truth.p95_delta_e);
+    mean_and_p95(noises, truth.mean_noise_delta_e, truth.p95_noise_delta_e);
+    truth.pixels_beyond_noise = beyond;
+    truth.mean_delta_e_beyond_noise = beyond > 0 ? beyond_sum / static_cast<double>(beyond) : 0.0;
     return truth;
 }
 
@@ -121,7 +143,7 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
     struct Shaded {
         std::array<double, 4> cpu{};
         double slack = 0;
-        std::array<double, 4> truth{};
+        std::array<double, 4> truth{}, second_truth{};  // two independent estimates of the integral
     };
     const bool with_truth = ground_truth && ref->truth && !request.scene.environment.source.empty();
     std::vector<Shaded> shaded(static_cast<size_t>(request.width) * static_cast<size_t>(request.height));
@@ -156,7 +178,11 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
                         error = std::isnan(difference) ? std::numeric_limits<double>::infinity() : std::max(error, difference);
                     }
                     out.slack = ref->slack && error > tolerance ? ref->slack(input, reference_context) : 0.0;
-                    if (with_truth) out.truth = ref->truth(input, reference_context, static_cast<unsigned>(y * request.width + x + 1));
+                    if (with_truth) {
+                        const unsigned seed = static_cast<unsigned>(y * request.width + x + 1);
+                        out.truth = ref->truth(input, reference_context, seed);
+                        out.second_truth = ref->truth(input, reference_context, seed + 0x9E3779B9u);  // another sequence
+                    }
                 }
         } catch (...) {
             const std::lock_guard lock(failure_mutex);
@@ -213,11 +239,13 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
             std::copy(colour.begin(), colour.end(), heat_pixel);
         }
     result.mean_abs_error = result.pixels > 0 ? error_sum / static_cast<double>(result.pixels) : 0.0;
-    if (with_truth) result.ground_truth = judge_ground_truth(request.width, request.height, [&](int x, int y) -> std::optional<std::pair<std::array<double, 4>, std::array<double, 4>>> {
-        if (positions.pixel(x, y)[3] <= 0.0f) return std::nullopt;
-        const Shaded& pixel = shaded[static_cast<size_t>(y) * static_cast<size_t>(request.width) + static_cast<size_t>(x)];
-        return std::pair{pixel.cpu, pixel.truth};
-    });
+    if (with_truth)
+        result.ground_truth = judge_ground_truth(request.width, request.height, [&](int x, int y)
+                                                     -> std::optional<std::tuple<std::array<double, 4>, std::array<double, 4>, std::array<double, 4>>> {
+            if (positions.pixel(x, y)[3] <= 0.0f) return std::nullopt;
+            const Shaded& pixel = shaded[static_cast<size_t>(y) * static_cast<size_t>(request.width) + static_cast<size_t>(x)];
+            return std::tuple{pixel.cpu, pixel.truth, pixel.second_truth};
+        });
     result.pass = result.pixels > 0 && result.mismatched_8bit == 0 && result.exceeding == 0;
     return result;
 }

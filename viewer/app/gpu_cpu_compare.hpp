@@ -34,7 +34,10 @@ struct CompareResult {
     // colours (white: radiance 1). Absent where the technique approximates nothing.
     struct GroundTruth {
         long pixels = 0;
-        double mean_delta_e = 0, p95_delta_e = 0, max_delta_e = 0;
+        double mean_delta_e = 0, p95_delta_e = 0, max_delta_e = 0;  // against the mean of two estimates
+        // The estimate's own noise (half the two estimates' ΔE00), and the errors beyond twice it.
+        double mean_noise_delta_e = 0, p95_noise_delta_e = 0, mean_delta_e_beyond_noise = 0;
+        long pixels_beyond_noise = 0;
         int worst_x = -1, worst_y = -1;
         std::array<double, 3> worst_reference{}, worst_truth{};
         image::FloatImage heat_map;  // ΔE00: blue 0, yellow 2, red 4 and beyond
