@@ -498,3 +498,14 @@ TEST_CASE("a key tap shorter than a frame reaches the viewer: H shows the key he
     CHECK(states[1]["help"] == true);
 }
 #endif
+
+TEST_CASE("the Effect tab lists the loader's warnings, as the command line prints them") {
+    // A .brdf file with an importance-sampling section and an unknown one: two warnings at their lines.
+    const std::string file = std::string(FXVIEW_TEST_EFFECTS) + "/brdf/explorer/is_func.brdf", script = temp_path("warnings.txt");
+    std::ofstream(script) << "ui-state\n";
+    const Result r = run("view " + file + " --window 640x480 --script " + script + " --frames 1");
+    REQUIRE(r.exit_code == 0);
+    const auto states = json_lines(r.out);
+    REQUIRE(states.size() == 1);
+    CHECK(states[0]["warnings"] == 2);
+}

@@ -362,7 +362,7 @@ void Viewer::verb_ui_state(const ScriptAction&) {
     glfwGetWindowSize(window_, &width, &height);
     std::cout << nlohmann::json{{"window", {width, height}}, {"ui_scale", imgui_->scale()}, {"panel_width", panel_shown_width_},
                                 {"panel_preferred_width", panel_width_.preferred()}, {"tab_bar_width", tab_bar_width_}, {"tabs_fit", tabs_fit_},
-                                {"help", show_help_}}
+                                {"help", show_help_}, {"warnings", session() ? session()->warnings().size() : 0}}
                      .dump()
               << std::endl;
 }

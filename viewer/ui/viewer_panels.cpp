@@ -214,6 +214,28 @@ void Viewer::draw_ui(int window_width, int window_height) {
     if (show_help_) draw_help();
 }
 
+// What the loader accepted but could not honour (unknown render states, skipped techniques,
+// placeholder textures, a .brdf's skipped sections and renamed names): listed as places that open
+// in the editor, as the errors are; the command line prints the same lines.
+void Viewer::draw_effect_warnings() {
+    std::string text;
+    for (const std::string& warning : session()->warnings()) text += warning + "\n";
+    if (text.empty()) return;
+    const std::vector<ErrorLocation> places = error_locations(text);
+    const size_t count = static_cast<size_t>(std::count(text.begin(), text.end(), '\n'));
+    if (!ImGui::CollapsingHeader(("Warnings (" + std::to_string(count) + ")##warnings").c_str())) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.45f, 1.0f));
+    for (size_t i = 0; i < places.size(); ++i) {
+        ImGui::PushID(static_cast<int>(i));
+        if (ImGui::SmallButton("Open")) status_ = open_in_editor(places[i].file, places[i].line);
+        ImGui::SameLine();
+        ImGui::TextWrapped("%s", places[i].message.c_str());
+        ImGui::PopID();
+    }
+    if (places.empty()) ImGui::TextWrapped("%s", text.c_str());  // warnings without a place
+    ImGui::PopStyleColor();
+}
+
 void Viewer::draw_effect_tab() {
     ImGui::TextWrapped("Effect: %s", effect_.path().empty() ? "(none: built-in views)" : effect_.path().c_str());
     const std::vector<ErrorLocation>& errors = effect_.error_places();
@@ -252,6 +274,7 @@ void Viewer::draw_effect_tab() {
     if (ImGui::Button("Reload")) {
         effect_.reload();
     }
+    draw_effect_warnings();
     if (!view_.objects.empty()) {
         auto& object = view_.objects[static_cast<size_t>(view_.selected_object)];
         // A technique's UIName annotation, where it has one, is what the user reads; its name (for the

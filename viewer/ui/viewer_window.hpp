@@ -98,6 +98,7 @@ private:
     ImGuiTabItemFlags tab_flags(const char* name);
     void draw_ui(int window_width, int window_height);
     void draw_effect_tab();
+    void draw_effect_warnings();
     void draw_view_tab();
     void draw_help();
 
