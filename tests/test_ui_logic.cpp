@@ -315,27 +315,25 @@ TEST_CASE("the light's marker: projected when in view, on the view's edge pointi
 TEST_CASE("the panel's width: the user's while the window has room, a share of a shrunk window, the user's again after") {
     ui::PanelWidth panel;
     panel.prefer(460);
+    // A frame after the window changed: a width is imposed, `expected`, and the panel shows it.
+    const auto imposed = [&panel](float window, float expected) {
+        const auto width = panel.impose(window);
+        REQUIRE(width);
+        CHECK(*width == doctest::Approx(expected));
+        panel.shown(*width);
+    };
     // First frame at 1280: the preferred width (36 %) is given.
-    const auto first = panel.impose(1280);
-    REQUIRE(first);
-    CHECK(*first == doctest::Approx(460));
-    panel.shown(460);
+    imposed(1280, 460);
     // Frames without a change of the window impose nothing: the user may be dragging the edge.
     CHECK_FALSE(panel.impose(1280));
     panel.shown(460);
     // The window shrinks to 640: 460 px would be 72 % of it; the panel takes 55 %.
-    const auto shrunk = panel.impose(640);
-    REQUIRE(shrunk);
-    CHECK(*shrunk == doctest::Approx(ui::PanelWidth::kMaxShare * 640));
-    panel.shown(*shrunk);
+    imposed(640, ui::PanelWidth::kMaxShare * 640);
     CHECK_FALSE(panel.impose(640));
-    panel.shown(*shrunk);
+    panel.shown(ui::PanelWidth::kMaxShare * 640);
     CHECK(panel.preferred() == doctest::Approx(460));  // an imposed width is not the user's choice
     // Back at 1280: the user's 460 again.
-    const auto grown = panel.impose(1280);
-    REQUIRE(grown);
-    CHECK(*grown == doctest::Approx(460));
-    panel.shown(460);
+    imposed(1280, 460);
     // The user drags the edge to 520: that becomes the width to return to.
     CHECK_FALSE(panel.impose(1280));
     panel.shown(520);

@@ -16,11 +16,6 @@ using image::Rgb;
 
 const Rgb kGrid{0.86f, 0.86f, 0.86f}, kInk{0.1f, 0.1f, 0.1f}, kMuted{0.55f, 0.55f, 0.55f};
 
-// A series' values that are NaN or infinite: not drawn, so the legend says how many.
-size_t not_finite(const BrdfSeries& s) {
-    return static_cast<size_t>(std::count_if(s.values.begin(), s.values.end(), [](double v) { return !std::isfinite(v); }));
-}
-
 void legend(Canvas& canvas, const std::vector<BrdfSeries>& series, int x, int y) {
     for (size_t i = 0; i < series.size(); ++i) {
         const int row = y + static_cast<int>(i) * 24;
@@ -61,6 +56,10 @@ double largest(const std::vector<BrdfSeries>& series) {
 }
 
 }  // namespace
+
+size_t not_finite(const BrdfSeries& s) {
+    return static_cast<size_t>(std::count_if(s.values.begin(), s.values.end(), [](double v) { return !std::isfinite(v); }));
+}
 
 image::FloatImage polar_chart(const std::vector<BrdfSeries>& series, double incidence_degrees, bool logarithmic, ChartSize size) {
     Canvas canvas(size.width, size.height);

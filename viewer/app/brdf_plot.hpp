@@ -15,6 +15,9 @@ struct BrdfSeries {
     std::vector<double> values;  // one per sample: polar, θo from -90° to 90°; albedo, per incidence
 };
 
+// A series' values that are NaN or infinite: not drawn, so the legend (and brdf-plot) say how many.
+size_t not_finite(const BrdfSeries& s);
+
 struct ChartSize {
     int width = 800, height = 600;
 };

@@ -172,12 +172,10 @@ CommandRunner add_brdf_plot_command(CLI::App& app) {
             series.push_back(std::move(s));
             rgb.push_back(std::move(values));
         }
-        for (const BrdfSeries& s : series) {
-            const auto bad = std::count_if(s.values.begin(), s.values.end(), [](double v) { return !std::isfinite(v); });
-            if (bad > 0)
-                std::fprintf(stderr, "brdf-plot: %s: %ld of %zu values are NaN or infinite: not drawn (the legend says so)\n", s.name.c_str(),
-                             static_cast<long>(bad), s.values.size());
-        }
+        for (const BrdfSeries& s : series)
+            if (const size_t bad = not_finite(s); bad > 0)
+                std::fprintf(stderr, "brdf-plot: %s: %zu of %zu values are NaN or infinite: not drawn (the legend says so)\n", s.name.c_str(), bad,
+                             s.values.size());
         const ChartSize chart{size.x, size.y};
         image::write_image(o->out, o->view == "polar" ? polar_chart(series, o->incidence, o->logarithmic, chart)
                                                       : albedo_chart(series, incidences, chart));

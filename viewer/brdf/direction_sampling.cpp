@@ -63,12 +63,13 @@ double strategy_pdf(int strategy_index, const glm::dvec3& l, const glm::dvec3& v
 }
 
 double mis_factor(int strategy_index, const glm::dvec3& l, const glm::dvec3& v) {
-    double squares = 0;
+    double squares = 0, own = 0;
     for (int k = 0; k < kSamplingStrategies; ++k) {
         const double p = strategy_pdf(k, l, v);
         squares += p * p;
+        if (k == strategy_index) own = p;
     }
-    return squares > 0 ? strategy_pdf(strategy_index, l, v) / squares : 0.0;
+    return squares > 0 ? own / squares : 0.0;
 }
 
 }  // namespace fxview::brdf

@@ -1,5 +1,6 @@
 #include "lighting/image_based_lighting.hpp"
 
+#include "brdf/microfacet.hpp"
 #include "brdf/models.hpp"
 
 #include <algorithm>
@@ -58,15 +59,7 @@ glm::dvec3 sample_ggx(double u1, double u2, double alpha) {
     return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
 }
 
-double ggx_d(double nh, double alpha) {
-    const double a2 = alpha * alpha, d = nh * nh * (a2 - 1.0) + 1.0;
-    return a2 / (kPi * d * d);
-}
-
-double smith_schlick(double cosine, double roughness) {
-    const double k = (roughness + 1.0) * (roughness + 1.0) / 8.0;
-    return cosine / (cosine * (1.0 - k) + k);
-}
+double ggx_d(double nh, double alpha) { return brdf::ggx_distribution(nh, alpha); }
 
 namespace {
 

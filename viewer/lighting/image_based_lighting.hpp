@@ -49,7 +49,6 @@ DfgTable make_dfg_table(int size, int samples = 512);
 glm::dvec3 sample_ggx(double u1, double u2, double alpha);
 // Point i of n of the Hammersley set.
 glm::dvec2 hammersley(unsigned i, unsigned n);
-double smith_schlick(double cosine, double roughness);  // one side of G, k = (roughness + 1)² / 8
 double ggx_d(double nh, double alpha);
 
 }  // namespace fxview::lighting
