@@ -96,7 +96,7 @@ GLSLShader ModifiedPhongFS {
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? modified_phong(f, PhongDiffuse, PhongSpecular, PhongExponent) : vec3(0.0));
-        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(sqrt(2.0 / (4.0 * PhongExponent + 2.0)), 0.02, 1.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(sqrt(2.0 / (4.0 * PhongExponent + 2.0)), 0.001, 1.0));
         fx_capture();
     }
 }
@@ -110,7 +110,7 @@ GLSLShader CookTorranceBeckmannFS {
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? cook_torrance_beckmann(f, CTDiffuse, CTSpecular, BeckmannM, Eta, PrintedBeckmann) : vec3(0.0));
-        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(BeckmannM, 0.02, 1.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(BeckmannM, 0.001, 1.0));
         fx_capture();
     }
 }
@@ -124,7 +124,7 @@ GLSLShader AshikhminShirleyFS {
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? ashikhmin_shirley(f, ASDiffuse, ASSpecular, Nu, Nv) : vec3(0.0));
-        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(sqrt(2.0 / (sqrt(Nu * Nv) + 2.0)), 0.02, 1.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(sqrt(2.0 / (sqrt(Nu * Nv) + 2.0)), 0.001, 1.0));
         fx_capture();
     }
 }
@@ -138,7 +138,7 @@ GLSLShader AshikhminShirleyFitFS {
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? ashikhmin_shirley_fit(f, FitDiffuse, FitSpecular, FitExponent) : vec3(0.0));
-        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(sqrt(2.0 / (FitExponent + 2.0)), 0.02, 1.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(sqrt(2.0 / (FitExponent + 2.0)), 0.001, 1.0));
         fx_capture();
     }
 }
@@ -152,7 +152,7 @@ GLSLShader CookTorranceGGXFS {
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? cook_torrance_ggx(f, GGXDiffuse, GGXF0, GGXAlpha) : vec3(0.0));
-        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(GGXAlpha, 0.02, 1.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(GGXAlpha, 0.001, 1.0));
         fx_capture();
     }
 }
@@ -166,7 +166,7 @@ GLSLShader CookTorranceBeckmannSchlickFS {
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? cook_torrance_beckmann_schlick(f, CTSDiffuse, CTSF0, CTSSlope) : vec3(0.0));
-        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(CTSSlope, 0.02, 1.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(CTSSlope, 0.001, 1.0));
         fx_capture();
     }
 }
@@ -180,7 +180,7 @@ GLSLShader BlinnPhongFS {
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? blinn_phong(f, BlinnDiffuse, BlinnSpecular, BlinnExponent) : vec3(0.0));
-        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(sqrt(2.0 / (BlinnExponent + 2.0)), 0.02, 1.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(sqrt(2.0 / (BlinnExponent + 2.0)), 0.001, 1.0));
         fx_capture();
     }
 }
@@ -194,7 +194,7 @@ GLSLShader WardFS {
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
         color = radiance(f, visible(f) ? ward_isotropic(f, WardDiffuse, WardSpecular, WardAlpha) : vec3(0.0));
-        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(WardAlpha, 0.02, 1.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(WardAlpha, 0.001, 1.0));
         fx_capture();
     }
 }

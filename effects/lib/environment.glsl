@@ -21,8 +21,8 @@ vec3 environment_facing_normal(vec3 n, vec3 v) {
     return nv >= 0.01 ? n : normalize(n + (0.01 - nv) * v);
 }
 
-// The environment's radiance towards `world_direction`, blurred by a GGX lobe of `roughness`
-// (prefiltered levels k / (levels - 1), linear between two).
+// The map's radiance towards `world_direction` (without the disc lights), blurred by a GGX lobe of
+// `roughness` (prefiltered levels k / (levels - 1), linear between two).
 vec3 environment_radiance(vec3 world_direction, float roughness) {
     vec3 d = FxEnvironmentRotation * world_direction;
     float last = float(textureQueryLevels(FxEnvironmentSpecular) - 1);
@@ -33,18 +33,53 @@ vec3 environment_radiance(vec3 world_direction, float roughness) {
     return mix(a, b, lod - l0) * FxEnvironmentIntensity;
 }
 
-// What a white Lambertian surface with normal `world_normal` reflects: irradiance / pi (order-2 SH,
-// the sun apart).
-vec3 environment_irradiance(vec3 world_normal) {
+// What a white Lambertian surface with normal `world_normal` reflects of the map without its disc
+// lights: irradiance / pi from order-2 SH.
+vec3 environment_map_irradiance(vec3 world_normal) {
     vec3 d = FxEnvironmentRotation * world_normal;
     float basis[9] = float[9](0.282095, 0.488603 * d.y, 0.488603 * d.z, 0.488603 * d.x, 1.092548 * d.x * d.y, 1.092548 * d.y * d.z,
                               0.315392 * (3.0 * d.z * d.z - 1.0), 1.092548 * d.x * d.z, 0.546274 * (d.x * d.x - d.y * d.y));
     vec3 sum = vec3(0.0);
     for (int k = 0; k < 9; ++k) sum += basis[k] * texelFetch(FxEnvironmentIrradiance, ivec2(k, 0), 0).rgb;
-    // The sun in closed form (order-2 SH would ring about it): texels 9 and 10, direction and irradiance / pi.
-    vec3 sun = texelFetch(FxEnvironmentIrradiance, ivec2(9, 0), 0).xyz;
-    vec3 sun_irradiance = texelFetch(FxEnvironmentIrradiance, ivec2(10, 0), 0).rgb;
-    return (max(sum, vec3(0.0)) + max(dot(d, sun), 0.0) * sun_irradiance) * FxEnvironmentIntensity;
+    return max(sum, vec3(0.0)) * FxEnvironmentIntensity;
+}
+
+// The disc lights (the sky's sun, a lamp or sun taken out of an image), at most four: kept out of the
+// prefiltered map and the SH and shaded in closed form. Disc k's world direction and angular radius;
+// returns its radiance x solid angle (zero: no disc k).
+const int kFxEnvironmentDiscs = 4;
+vec3 environment_disc(int k, out vec3 world_direction, out float angular_radius) {
+    vec4 a = texelFetch(FxEnvironmentIrradiance, ivec2(9 + 2 * k, 0), 0);
+    world_direction = transpose(FxEnvironmentRotation) * a.xyz;  // a rotation: its inverse
+    angular_radius = a.w;
+    return texelFetch(FxEnvironmentIrradiance, ivec2(10 + 2 * k, 0), 0).rgb * FxEnvironmentIntensity;
+}
+
+// The direction nearest to `towards` of the disc of `angular_radius` about `centre`.
+vec3 environment_disc_nearest(vec3 centre, float angular_radius, vec3 towards) {
+    float c = clamp(dot(centre, towards), -1.0, 1.0);
+    if (c >= cos(angular_radius)) return towards;
+    vec3 side = towards - c * centre;
+    float length_side = length(side);
+    if (length_side < 1e-8) return centre;  // towards the opposite way: any edge point is as near
+    return cos(angular_radius) * centre + sin(angular_radius) * side / length_side;
+}
+
+// GGX width alpha widened for a disc of `angular_radius` seen through a BRDF evaluated at its centre:
+// the lobe's mean over the disc is the peak of a lobe sqrt(alpha² + (radius/2)²) wide.
+float environment_disc_alpha(float alpha, float angular_radius) { return sqrt(alpha * alpha + 0.25 * angular_radius * angular_radius); }
+
+// What a white Lambertian surface with normal `world_normal` reflects: irradiance / pi (order-2 SH,
+// the discs in closed form: the SH would ring about them).
+vec3 environment_irradiance(vec3 world_normal) {
+    vec3 sum = environment_map_irradiance(world_normal);
+    for (int k = 0; k < kFxEnvironmentDiscs; ++k) {
+        vec3 direction;
+        float radius;
+        vec3 power = environment_disc(k, direction, radius);
+        sum += max(dot(world_normal, direction), 0.0) * power / 3.14159265358979323846;
+    }
+    return sum;
 }
 
 // The split sum's (A, B): single-scattering GGX reflects F0 A + B of uniform light; and G, with which

@@ -1,7 +1,7 @@
 // Any BRDF lit by the environment, by filtered importance sampling (Křivánek & Colbert 2008): 32
 // directions, half cosine-distributed about n and half reflected about GGX normals of width `alpha`
 // (the lobe's rough size), combined by the balance heuristic; each reads the prefiltered radiance
-// whose lobe covers its share of the sphere, so the estimate is smooth.
+// whose lobe covers its share of the sphere, so the estimate is smooth. The disc lights in closed form.
 // Included inside a fragment shader block after that block defines
 // vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) (unit vectors as BRDF() takes them),
 // below environment.glsl at the top level. No include guard: each block includes it once.
@@ -52,5 +52,24 @@ vec3 environment_light(vec3 n, vec3 v, vec3 x, vec3 y, float alpha) {
         if (any(isnan(f)) || any(isinf(f))) continue;  // as Lit draws such a BRDF black
         sum += f * nl / pdf * environment_radiance(l, environment_filter_roughness(pdf));
     }
-    return sum / float(kFxEnvironmentSamples);
+    // Each disc light through the BRDF at one point, the lobe's mean over the disc taken as that of a
+    // GGX lobe of width alpha (environment_disc_alpha): the point nearest the mirror direction of the
+    // disc shrunk by b²/α'² (b = radius/2): the disc itself for a mirror (its sharp image), the centre
+    // for a lobe much wider than the disc.
+    vec3 discs = vec3(0.0);
+    vec3 r = reflect(-v, n);
+    for (int k = 0; k < kFxEnvironmentDiscs; ++k) {
+        vec3 centre;
+        float radius;
+        vec3 power = environment_disc(k, centre, radius);
+        if (!(power.r + power.g + power.b > 0.0)) continue;
+        float widened = environment_disc_alpha(alpha, radius), b = 0.5 * radius;
+        vec3 l = environment_disc_nearest(centre, radius * b * b / (widened * widened), r);
+        float nl = dot(n, l);
+        if (nl <= 0.0) continue;
+        vec3 f = fx_environment_brdf(l, v, n, x, y);
+        if (any(isnan(f)) || any(isinf(f))) continue;
+        discs += f * nl * power * (alpha * alpha) / (widened * widened);
+    }
+    return sum / float(kFxEnvironmentSamples) + discs;
 }

@@ -23,7 +23,7 @@ image::FloatImage render_offscreen(const RenderRequest& request) {
 
     gl::RenderTarget target({request.width, request.height, 1, request.samples});
     const auto draw_environment = [&](const render::EnvironmentMaps& environment) {  // behind the objects
-        render::Skybox().draw(environment.texture("environment:specular")->texture.get(), request.scene.camera, target,
+        render::Skybox().draw(environment.background().texture.get(), request.scene.camera, target,
                               {request.scene.environment.world_to_environment(), request.scene.environment.intensity, true});
         target.resolve();
     };

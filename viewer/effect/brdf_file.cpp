@@ -102,17 +102,19 @@ bool defines_brdf_function(const std::string& line) {
 }
 
 // Names the programs a .brdf file is compiled into already declare at global scope (effects/lib:
-// vertex inputs and outputs, the output `color`, the environment's helpers, the scene's uniforms).
-// A file's own use of one is renamed brdf_NAME throughout its shader block, so that no user name
-// can clash; names starting with fx_/Fx are fxview's (docs/effect-format.md).
+// vertex inputs and outputs, the output `color`, the scene's uniforms; the environment's helpers are
+// every name starting with environment_, is_reserved()). A file's own use of one is renamed
+// brdf_NAME throughout its shader block, so that no user name can clash; names starting with fx_/Fx
+// are fxview's (docs/effect-format.md).
 const std::set<std::string>& reserved_names() {
     static const std::set<std::string> names = {
         "color", "uv", "corner", "main", "in_position", "in_normal", "in_tangent", "in_bitangent", "in_uv", "vs_out", "fs_in", "VertexData",
-        "environment_dfg", "environment_direction", "environment_facing_normal", "environment_filter_roughness", "environment_irradiance",
-        "environment_light", "environment_radiance", "World", "WorldInverseTranspose", "ViewProjection", "CameraPosition", "LightPosition",
+        "kFxEnvironmentSamples", "kFxEnvironmentDiscs", "metallic_roughness_discs", "World", "WorldInverseTranspose", "ViewProjection", "CameraPosition", "LightPosition",
         "LightIrradiance", "kPi"};
     return names;
 }
+
+bool is_reserved(const std::string& word) { return reserved_names().count(word) || word.rfind("environment_", 0) == 0; }
 
 // `line` with every reserved identifier (as a whole word) renamed brdf_NAME.
 std::string rename_reserved(const std::string& line, std::set<std::string>& renamed) {
@@ -126,7 +128,7 @@ std::string rename_reserved(const std::string& line, std::set<std::string>& rena
         size_t end = at;
         while (end < line.size() && is_identifier_char(line[end])) ++end;
         const std::string word = line.substr(at, end - at);
-        if (reserved_names().count(word) && !std::isdigit(static_cast<unsigned char>(word[0]))) {
+        if (is_reserved(word) && !std::isdigit(static_cast<unsigned char>(word[0]))) {
             out += "brdf_" + word;
             renamed.insert(word);
         } else {
@@ -219,7 +221,7 @@ TranslatedLines translate_brdf_file(const std::string& path, const std::vector<s
         }
         if (block != Block::Parameters) throw EffectError(where, "text outside a '::begin parameters' or '::begin shader' block: '" + excerpt(line) + "'");
         std::vector<std::string> w = words(trim(line.substr(0, line.find('#'))));  // a trailing # comment is allowed
-        if (w.size() >= 2 && reserved_names().count(w[1])) {
+        if (w.size() >= 2 && is_reserved(w[1])) {
             warn(number, "parameter '" + w[1] + "' is called brdf_" + w[1] + " in fxview (--set brdf_" + w[1] + "=...): fxview's shaders hold that name");
             w[1] = "brdf_" + w[1];
         }

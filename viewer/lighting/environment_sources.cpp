@@ -193,16 +193,40 @@ FloatCube from_files(const std::string& source, int size, const ResourceLimits& 
 
 double DiscLight::solid_angle() const { return 2.0 * kPi * (1.0 - std::cos(angular_radius)); }
 
-std::array<glm::dvec3, 19> DiscLight::quadrature(const glm::dvec3& centre) const {
+namespace {
+
+// A tangent frame about `centre` for points on a disc around it.
+void disc_frame(const glm::dvec3& centre, glm::dvec3& dt, glm::dvec3& db) {
     const glm::dvec3 up = std::abs(centre.y) < 0.999 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
-    const glm::dvec3 dt = glm::normalize(glm::cross(up, centre)), db = glm::cross(centre, dt);
-    std::array<glm::dvec3, 19> points;
-    for (int k = 0; k < 19; ++k) {
-        const double ring = k == 0 ? 0.0 : k <= 6 ? 0.45 : 0.85, angle = 2 * kPi * (k % 12) / (k <= 6 ? 6.0 : 12.0);
-        points[static_cast<size_t>(k)] = glm::normalize(centre + std::tan(ring * angular_radius) * (std::cos(angle) * dt + std::sin(angle) * db));
+    dt = glm::normalize(glm::cross(up, centre));
+    db = glm::cross(centre, dt);
+}
+
+}  // namespace
+
+std::vector<glm::dvec3> DiscLight::quadrature(const glm::dvec3& centre, int count) const {
+    glm::dvec3 dt, db;
+    disc_frame(centre, dt, db);
+    const double golden = kPi * (3.0 - std::sqrt(5.0));
+    std::vector<glm::dvec3> points;
+    points.reserve(static_cast<size_t>(count));
+    for (int k = 0; k < count; ++k) {
+        const double r = std::sqrt((k + 0.5) / count) * angular_radius, angle = golden * k;
+        points.push_back(glm::normalize(centre + std::tan(r) * (std::cos(angle) * dt + std::sin(angle) * db)));
     }
     return points;
 }
+
+glm::dvec3 DiscLight::nearest(const glm::dvec3& centre, const glm::dvec3& towards, double radius) {
+    const double c = std::clamp(glm::dot(centre, towards), -1.0, 1.0);
+    if (c >= std::cos(radius)) return towards;
+    const glm::dvec3 side = towards - c * centre;
+    const double length = glm::length(side);
+    if (length < 1e-8) return centre;  // the opposite way: every edge point is as near
+    return std::cos(radius) * centre + std::sin(radius) * side / length;
+}
+
+double disc_widened_alpha(double alpha, double angular_radius) { return std::sqrt(alpha * alpha + 0.25 * angular_radius * angular_radius); }
 
 FloatCube Environment::radiance_with_discs() const {
     if (discs.empty()) return radiance;

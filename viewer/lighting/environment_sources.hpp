@@ -25,10 +25,19 @@ struct DiscLight {
     double angular_radius = 0.0;          // radians
     glm::dvec3 radiance{0.0};             // uniform over the disc
     double solid_angle() const;
-    // 19 directions of equal weight over the disc centred on `centre` (the direction, or it turned
-    // into another frame): the centre and rings at 0.45 and 0.85 of the radius (6 and 12 points).
-    std::array<glm::dvec3, 19> quadrature(const glm::dvec3& centre) const;
+    // `count` directions of equal weight over the disc centred on `centre` (the direction, or it
+    // turned into another frame): a sunflower (Vogel) spiral, point k at sqrt((k + ½)/count) of the
+    // radius, turned by the golden angle; for ground truths, dense enough for lobes narrower than the disc.
+    std::vector<glm::dvec3> quadrature(const glm::dvec3& centre, int count = 512) const;
+    // The direction nearest to `towards` of the disc of `radius` (towards itself inside it) centred on `centre`.
+    static glm::dvec3 nearest(const glm::dvec3& centre, const glm::dvec3& towards, double radius);
 };
+
+// A GGX lobe of width alpha averaged over a disc of angular radius rho about the lobe's centre is, in
+// the small-angle limit, the peak of a GGX lobe of width sqrt(alpha² + (rho/2)²) (the half vector
+// turns half as far as the light): the width that shades a disc through a BRDF evaluated at its centre,
+// exact for a mirror (alpha 0) and for lobes much wider than the disc.
+double disc_widened_alpha(double alpha, double angular_radius);
 
 struct Environment {
     FloatCube radiance;             // without the discs

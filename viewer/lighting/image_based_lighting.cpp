@@ -61,41 +61,19 @@ glm::dvec3 sample_ggx(double u1, double u2, double alpha) {
 
 double ggx_d(double nh, double alpha) { return brdf::ggx_distribution(nh, alpha); }
 
-namespace {
-
-// ∫ D(h)/4 (n·l) dl over the hemisphere for v = n: with l the mirror of n about h, n·l = cos 2θh and
-// dl = 4 (l·h) dω_h, so ∫ over θh < 45° of D(θh) cos 2θh cos θh 2π sin θh dθh (midpoints, 4096 steps:
-// far below the samples' own error, which is what a disc's share was divided by before).
-double lobe_normalisation(double alpha) {
-    const int steps = 4096;
-    const double end = kPi / 4, step = end / steps;
-    double sum = 0;
-    for (int i = 0; i < steps; ++i) {
-        const double t = (i + 0.5) * step;
-        sum += ggx_d(std::cos(t), alpha) * std::cos(2 * t) * std::cos(t) * 2 * kPi * std::sin(t) * step;
-    }
-    return sum;
-}
-
-}  // namespace
-
 PrefilteredEnvironment prefilter(const Environment& environment, int levels, int samples) {
     PrefilteredEnvironment out;
     const FloatCube& radiance = environment.radiance;
     std::vector<FloatCube> chain{radiance};
     while (chain.back().size > 1) chain.push_back(downsample(chain.back()));
-    const FloatCube full = environment.radiance_with_discs();
-    out.specular.push_back(full);
+    out.specular.push_back(radiance);
     const double texel_angle = 4.0 * kPi / (6.0 * radiance.size * radiance.size);
-    std::vector<std::array<glm::dvec3, 19>> disc_points;  // the same for every texel and level
-    for (const DiscLight& disc : environment.discs) disc_points.push_back(disc.quadrature(disc.direction));
     for (int level = 1; level < levels; ++level) {
         const double roughness = static_cast<double>(level) / (levels - 1), alpha = roughness * roughness;
         FloatCube cube(std::max(1, radiance.size >> level));
-        // The narrowest lobe needs few directions; wider ones many, or a bright small source (the sun)
-        // shows as blotches where the same directions of neighbouring texels catch it.
+        // The narrowest lobe needs few directions; wider ones many, or a bright small region (a window
+        // left in the map) shows as blotches where the same directions of neighbouring texels catch it.
         const int count = level == 1 ? samples : samples * 4;
-        const double normalisation = lobe_normalisation(alpha);
         std::vector<std::jthread> workers;
         for (int face = 0; face < 6; ++face)
             workers.emplace_back([&, face] {
@@ -119,22 +97,7 @@ PrefilteredEnvironment prefilter(const Environment& environment, int levels, int
                             sum += nl * glm::dvec3(sample_lod(chain, l, lod));
                             weight += nl;
                         }
-                        // A disc: ∫ L w dl / ∫ w dl with w = D(h)/4 (n·l), the sampled directions' density times n·l
-                        // (n = v = r), whose total the samples estimate as weight / count; w over the
-                        // disc by 19 points (centre and two rings).
-                        glm::dvec3 discs(0.0);
-                        for (size_t k = 0; k < environment.discs.size(); ++k) {
-                            double w = 0.0;
-                            for (const glm::dvec3& l : disc_points[k]) {
-                                const double nl = glm::dot(n, l);
-                                if (nl > 0.0) w += ggx_d(glm::dot(n, glm::normalize(n + l)), alpha) / 4.0 * nl / 19.0;
-                            }
-                            const DiscLight& disc = environment.discs[k];
-                            discs += disc.radiance * disc.solid_angle() * w;
-                        }
-                        // The map's part is a ratio of the samples' sums; the discs' share is divided by
-                        // the lobe's exact normalisation (its sample estimate is off by a few %).
-                        cube.at(face, x, y) = glm::vec3(weight > 0 ? sum / weight + discs / normalisation : sum);
+                        cube.at(face, x, y) = glm::vec3(weight > 0 ? sum / weight : sum);
                     }
             });
         workers.clear();

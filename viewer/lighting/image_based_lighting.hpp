@@ -21,7 +21,7 @@
 namespace fxview::lighting {
 
 struct PrefilteredEnvironment {
-    std::vector<FloatCube> specular;      // level k for roughness k / (levels - 1)
+    std::vector<FloatCube> specular;      // level k for roughness k / (levels - 1), without the discs
     std::array<glm::vec3, 9> irradiance;  // SH coefficients of E(n) / pi, the cosine-convolved radiance (without the discs)
     // The discs' irradiance in closed form (order-2 SH would ring badly about a low sun): E(n)/pi adds
     // max(n·direction, 0) times this for each, from their centre direction.
@@ -29,7 +29,8 @@ struct PrefilteredEnvironment {
 };
 
 // `samples` GGX directions per texel of level 1, four times as many on wider lobes (level 0 is the
-// radiance with the discs drawn in); the discs are added to every other level in closed form.
+// radiance). The discs are in none of the levels: shading adds them in closed form (disc_lighting.hpp),
+// which no prefiltered lobe centred as if n = v = r can do for a source this small and bright.
 PrefilteredEnvironment prefilter(const Environment& environment, int levels, int samples = 128);
 
 // E(n) / π for SH coefficients of prefilter(): the radiance a white Lambertian surface reflects.

@@ -262,7 +262,7 @@ Reference sampled_environment(ModelFrom model_from, AlphaFrom alpha_from) {
             return brdf::evaluate(model, at);
         };
     };
-    const auto alpha = [alpha_from](const ReferenceContext& c) { return std::clamp(alpha_from(c), 0.02, 1.0); };
+    const auto alpha = [alpha_from](const ReferenceContext& c) { return std::clamp(alpha_from(c), 0.001, 1.0); };
     return with_environment(
         make(model_from, 1e-4, kWhy),
         [value_towards, alpha](const EnvironmentLookup& environment, const brdf::Directions& d, const ReferenceContext& c, double* seam) {

@@ -42,7 +42,7 @@ glm::dvec3 EnvironmentLookup::light(const brdf::Directions& facing, const Brdf& 
         spread += seam_here * std::max({weight.r, weight.g, weight.b});
     }
     if (seam) *seam = spread;
-    return sum;
+    return sum + discs_shaded(d, f, alpha);
 }
 
 template <typename Brdf>

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "brdf/microfacet.hpp"
 #include "lighting/image_based_lighting.hpp"
 
 namespace fxview::reference {
@@ -34,6 +35,10 @@ glm::dvec3 EnvironmentLookup::irradiance(const glm::dvec3& n) const {
     return lighting::evaluate_irradiance(maps_->prefiltered(), rotation_ * n) * intensity_;
 }
 
+glm::dvec3 EnvironmentLookup::map_irradiance(const glm::dvec3& n) const {
+    return glm::max(lighting::evaluate_irradiance(maps_->prefiltered().irradiance, rotation_ * n), glm::dvec3(0.0)) * intensity_;
+}
+
 glm::dvec3 EnvironmentLookup::dfg(double nv, double roughness) const { return maps_->dfg().lookup(nv, roughness); }
 
 glm::dvec3 EnvironmentLookup::unfiltered(const glm::dvec3& world) const {
@@ -44,10 +49,27 @@ glm::dvec3 EnvironmentLookup::discs(const brdf::Directions& d, const std::functi
     glm::dvec3 sum(0.0);
     const glm::dmat3 to_world = glm::transpose(rotation_);  // rotations: the inverse is the transpose
     for (const lighting::DiscLight& disc : maps_->unfiltered().discs) {
-        for (const glm::dvec3& l : disc.quadrature(to_world * disc.direction)) {
+        const std::vector<glm::dvec3> points = disc.quadrature(to_world * disc.direction);
+        for (const glm::dvec3& l : points) {
             const double nl = glm::dot(d.n, l);
-            if (nl > 0.0) sum += f(l) * nl * disc.radiance * intensity_ * disc.solid_angle() / 19.0;
+            if (nl > 0.0) sum += f(l) * nl * disc.radiance * intensity_ * disc.solid_angle() / static_cast<double>(points.size());
         }
+    }
+    return sum;
+}
+
+glm::dvec3 EnvironmentLookup::discs_shaded(const brdf::Directions& d, const std::function<glm::dvec3(const glm::dvec3&)>& f, double alpha) const {
+    glm::dvec3 sum(0.0);
+    const glm::dmat3 to_world = glm::transpose(rotation_);
+    const glm::dvec3 r = 2.0 * glm::dot(d.n, d.v) * d.n - d.v;
+    for (const lighting::DiscLight& disc : maps_->unfiltered().discs) {
+        const double widened = lighting::disc_widened_alpha(alpha, disc.angular_radius), b = disc.angular_radius / 2;
+        const glm::dvec3 l = lighting::DiscLight::nearest(to_world * disc.direction, r, disc.angular_radius * b * b / (widened * widened));
+        const double nl = glm::dot(d.n, l);
+        if (nl <= 0.0) continue;
+        const glm::dvec3 value = f(l);
+        if (!(std::isfinite(value.r) && std::isfinite(value.g) && std::isfinite(value.b))) continue;
+        sum += value * nl * disc.radiance * disc.solid_angle() * intensity_ * (alpha * alpha) / (widened * widened);
     }
     return sum;
 }
@@ -85,7 +107,22 @@ glm::dvec3 metallic_roughness_environment(const EnvironmentLookup& environment, 
     const double a = std::clamp(m.roughness, 0.0, 1.0), s = (1.0 - a) * (std::sqrt(1.0 - a) + a);
     const glm::dvec3 r = glm::normalize(glm::mix(d.n, 2.0 * nv * d.n - d.v, s));
     const glm::dvec3 specular = (f0 * ab.x + ab.y) * scale * environment.radiance(r, m.roughness, seam);
-    return specular + (1.0 - f0) * (1.0 - ab.z) * (1.0 - m.metallic) * m.base_color * environment.irradiance(d.n);
+    const glm::dvec3 map = specular + (1.0 - f0) * (1.0 - ab.z) * (1.0 - m.metallic) * m.base_color * environment.map_irradiance(d.n);
+    // The disc lights through the BRDF at their centres, its lobe widened by each (metallic_roughness_discs).
+    glm::dvec3 discs(0.0);
+    const glm::dmat3 to_world = glm::transpose(environment.rotation_);
+    const double alpha = m.roughness * m.roughness;
+    for (const lighting::DiscLight& disc : environment.maps_->unfiltered().discs) {
+        const glm::dvec3 l = to_world * disc.direction, h = glm::normalize(l + d.v);
+        const double nl = glm::dot(d.n, l);
+        if (nl <= 0.0) continue;
+        const glm::dvec3 fresnel = f0 + (1.0 - f0) * std::pow(std::clamp(1.0 - glm::dot(d.v, h), 0.0, 1.0), 5.0);
+        const glm::dvec3 diffuse = (1.0 - fresnel) * (1.0 - m.metallic) * m.base_color / std::numbers::pi;
+        const glm::dvec3 specular = brdf::ggx_distribution(glm::dot(d.n, h), lighting::disc_widened_alpha(alpha, disc.angular_radius)) *
+                                    brdf::smith_ggx_correlated(nl, nv, alpha) * fresnel / (4.0 * nl * nv);
+        discs += (diffuse + specular * scale) * nl * disc.radiance * disc.solid_angle() * environment.intensity_;
+    }
+    return map + discs;
 }
 
 }  // namespace fxview::reference

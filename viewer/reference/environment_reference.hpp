@@ -20,13 +20,17 @@ public:
     // texels at a cube corner (where GL leaves the texel to the implementation).
     glm::dvec3 radiance(const glm::dvec3& d, double roughness, double* seam = nullptr) const;
     glm::dvec3 irradiance(const glm::dvec3& n) const;  // E / pi, at least 0
+    glm::dvec3 map_irradiance(const glm::dvec3& n) const;  // the same without the disc lights (the SH alone)
     glm::dvec3 dfg(double nv, double roughness) const;  // A, B, G
     // The ground truth of ∫ L(l) f(l) (n·l) dl over the unfiltered environment: Monte Carlo with
     // `samples` directions (half cosine-, half GGX-distributed for `alpha` around n, combined by the
     // balance heuristic; a Hammersley set turned per pixel by `seed`) plus each disc light (the sun)
-    // by a 19-point quadrature over it.
+    // by a 512-point quadrature over it.
     // environment_light.glsl: 32 directions (half cosine-, half GGX(alpha)-distributed, balance
-    // heuristic), each reading the prefiltered radiance whose lobe covers its share of the sphere.
+    // heuristic), each reading the prefiltered radiance whose lobe covers its share of the sphere;
+    // each disc light through f at its point nearest the mirror direction of the disc shrunk by
+    // b²/α'² (b = radius/2, α' = disc_widened_alpha: the disc for a mirror, its centre for a wide lobe),
+    // scaled by α²/α'² (a GGX lobe's mean over the disc).
     template <typename Brdf>
     glm::dvec3 light(const brdf::Directions& d, const Brdf& f, double alpha, double* seam = nullptr) const;
     template <typename Brdf>
@@ -35,7 +39,12 @@ public:
 private:
     const render::EnvironmentMaps* maps_ = nullptr;
     glm::dvec3 unfiltered(const glm::dvec3& world) const;  // bilinear in the radiance without discs
+    // Each disc light through f by its 512-point quadrature (the ground truth).
     glm::dvec3 discs(const brdf::Directions& d, const std::function<glm::dvec3(const glm::dvec3&)>& f) const;
+    // As environment_light.glsl shades them (see light()).
+    glm::dvec3 discs_shaded(const brdf::Directions& d, const std::function<glm::dvec3(const glm::dvec3&)>& f, double alpha) const;
+    friend glm::dvec3 metallic_roughness_environment(const EnvironmentLookup&, const brdf::Directions&, const brdf::MetallicRoughness&, bool,
+                                                     double*);
     glm::dmat3 rotation_{1.0};
     double intensity_ = 0.0;
 };

@@ -70,13 +70,30 @@ EnvironmentMaps::EnvironmentMaps(const std::string& source, const ResourceLimits
 
     std::vector<float> sh;
     for (const glm::vec3& c : prefiltered_.irradiance) sh.insert(sh.end(), {c.r, c.g, c.b, 1.0f});
-    // Texels 9 and 10: the one disc (the sun) as direction and irradiance / pi; zero without one.
-    const std::pair<glm::vec3, glm::vec3> disc =
-        prefiltered_.disc_irradiance.empty() ? std::pair{glm::vec3(0.0f), glm::vec3(0.0f)} : prefiltered_.disc_irradiance.front();
-    if (prefiltered_.disc_irradiance.size() > 1) throw Error(source + ": the GPU tables hold one disc light");
-    sh.insert(sh.end(), {disc.first.x, disc.first.y, disc.first.z, 0.0f, disc.second.r, disc.second.g, disc.second.b, 0.0f});
-    texture::TextureData irradiance{texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(11, 1, sh)}}, specular_data_.source + " (SH irradiance)"};
+    // Texels 9 + 2k and 10 + 2k: disc k as direction and angular radius, radiance x solid angle and
+    // solid angle; zero where there is none.
+    if (environment_.discs.size() > kMaxDiscs)
+        throw Error(source + ": " + std::to_string(environment_.discs.size()) + " disc lights, more than the " + std::to_string(kMaxDiscs) +
+                    " the GPU tables hold");
+    for (int k = 0; k < kMaxDiscs; ++k) {
+        if (static_cast<size_t>(k) < environment_.discs.size()) {
+            const lighting::DiscLight& disc = environment_.discs[static_cast<size_t>(k)];
+            const glm::dvec3 power = disc.radiance * disc.solid_angle();
+            sh.insert(sh.end(), {static_cast<float>(disc.direction.x), static_cast<float>(disc.direction.y), static_cast<float>(disc.direction.z),
+                                 static_cast<float>(disc.angular_radius), static_cast<float>(power.r), static_cast<float>(power.g),
+                                 static_cast<float>(power.b), static_cast<float>(disc.solid_angle())});
+        } else {
+            sh.insert(sh.end(), 8, 0.0f);
+        }
+    }
+    texture::TextureData irradiance{texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(9 + 2 * kMaxDiscs, 1, sh)}},
+                                    specular_data_.source + " (SH irradiance, disc lights)"};
     irradiance_ = upload(irradiance, irradiance.source);
+
+    texture::TextureData background{texture::TextureType::Cube, texture::PixelFormat::RGBA32F, {}, specular_data_.source + " (background)"};
+    const lighting::FloatCube with_discs = environment_.radiance_with_discs();
+    for (int face = 0; face < 6; ++face) background.faces.push_back({cube_face_level(with_discs, face)});
+    background_ = upload(background, background.source);
 
     // Rows top first in TextureData; the table's row j (roughness (j + ½) / size) is GL row j from the bottom.
     std::vector<float> table;

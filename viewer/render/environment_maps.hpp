@@ -1,9 +1,12 @@
 // The scene environment on the GPU: the textures effects sample for image-based lighting, made
 // from lighting/ on the CPU and kept there too for the CPU references (docs/effect-format.md,
 // "Environment lighting"):
-//   environment:specular    cube map, RGBA32F, one mip level per roughness step (level 0 the radiance)
-//   environment:irradiance  11x1 RGBA32F: the order-2 SH coefficients of the cosine-convolved radiance / pi,
-//                           then the sun's direction and irradiance / pi (zero without a sun)
+//   environment:specular    cube map, RGBA32F, one mip level per roughness step (level 0 the radiance),
+//                           without the disc lights (they are shaded in closed form)
+//   environment:irradiance  17x1 RGBA32F: the order-2 SH coefficients of the cosine-convolved radiance / pi
+//                           (without the discs), then per disc light (at most kMaxDiscs; the sun, a lamp)
+//                           two texels: direction and angular radius, radiance x solid angle and solid
+//                           angle (zero for no disc)
 //   environment:dfg         2D RGBA32F: (A, B, G) of the split sum per (n·v, roughness), clamped at the edges
 // No source: black textures of one texel (an effect samples them and adds nothing).
 #pragma once
@@ -20,6 +23,7 @@ public:
     static constexpr int kSize = 256;    // texels across a face of the radiance (level 0)
     static constexpr int kLevels = 6;    // roughness 0, 0.2, ..., 1 on levels 256 .. 8
     static constexpr int kDfgSize = 64;
+    static constexpr int kMaxDiscs = 4;  // as many as lighting::BrightSourceRules takes out of an image
 
     // Throws fxview::Error naming the source when it cannot be made.
     explicit EnvironmentMaps(const std::string& source, const ResourceLimits& limits = {});
@@ -36,6 +40,8 @@ public:
     const lighting::DfgTable& dfg() const { return dfg_; }
     const texture::TextureData& specular_data() const { return specular_data_; }  // faces[face][level], GL rows
     const texture::TextureData& specular_level(int level) const { return specular_levels_.at(static_cast<size_t>(level)); }  // one level's six faces
+    // The radiance with the disc lights drawn in, one level: what the background shows.
+    const GpuTexture& background() const { return background_; }
 
 private:
     std::string source_;
@@ -44,7 +50,7 @@ private:
     lighting::DfgTable dfg_;
     texture::TextureData specular_data_;
     std::vector<texture::TextureData> specular_levels_;
-    GpuTexture specular_, irradiance_, dfg_texture_;
+    GpuTexture specular_, irradiance_, dfg_texture_, background_;
 };
 
 }  // namespace fxview::render

@@ -184,7 +184,7 @@ void Viewer::render_scene(const gl::RenderTarget& target) {
     } else if (session() && !view_.scene.environment.source.empty()) {
         try {  // the scene's environment as background
             const render::EnvironmentMaps& environment = session()->environment(view_.scene.environment);
-            skybox_->draw(environment.texture("environment:specular")->texture.get(), view_.scene.camera, target,
+            skybox_->draw(environment.background().texture.get(), view_.scene.camera, target,
                           {view_.scene.environment.world_to_environment(), view_.scene.environment.intensity, true});
         } catch (const std::exception& error) {
             effect_.set_error(error.what());
