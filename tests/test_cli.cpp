@@ -597,6 +597,50 @@ TEST_CASE("BRDF Explorer's own leniencies load: words after 'analytic', isFunc a
     CHECK((clash.out + clash.err).find("'environment_filter_roughness' is renamed") != std::string::npos);
 }
 
+TEST_CASE("BRDF Explorer's .bparam parameter files open as effects, load as presets and are saved") {
+    const std::string dir = std::string(FXVIEW_TEST_EFFECTS) + "/brdf/explorer/";
+    const auto albedo = [&](const std::string& target, const std::string& options) {
+        const Result r = run("brdf-check " + target + " --phi-i 0 --json " + options);
+        CAPTURE(r.err);
+        REQUIRE(r.exit_code == 0);
+        return nlohmann::json::parse(r.out)["albedo"][0]["rgb"][0].get<double>();
+    };
+    // The .bparam's values replace the .brdf's defaults: red albedo color.r + 0.1 = 0.3 (the .brdf's
+    // own 0.5), and a = 1/(2π) gives a Lambertian of 0.5 (its default 0.5 gives π/2).
+    CHECK(albedo(dir + "clashing_names.bparam", "") == doctest::Approx(0.3).epsilon(1e-3));
+    CHECK(albedo(dir + "no_final_end.bparam", "") == doctest::Approx(0.5).epsilon(1e-3));
+    // --set still goes over it; as a preset over the .brdf it does the same.
+    CHECK(albedo(dir + "clashing_names.bparam", "--set brdf_color=0.4,0,0") == doctest::Approx(0.5).epsilon(1e-3));
+    CHECK(albedo(dir + "clashing_names.brdf", "--preset " + dir + "clashing_names.bparam") == doctest::Approx(0.3).epsilon(1e-3));
+    // A name the .brdf lacks is said at the .bparam's line, not an error (BRDF Explorer ignores it).
+    const Result check = run("check " + dir + "clashing_names.bparam");
+    CHECK(check.exit_code == 0);
+    CHECK((check.out + check.err).find("clashing_names.bparam:6: warning:") != std::string::npos);
+    CHECK((check.out + check.err).find("'roughness'") != std::string::npos);
+    // Saved as BRDF Explorer writes it, with the .brdf's own names; read back, the values hold.
+    const std::string saved = temp_path("saved.bparam");
+    const Result save = run("render " + dir + "clashing_names.brdf --set brdf_color=0.35,0.1,0.1 --size 8x8 --out " + temp_path("bparam.png") +
+                            " --save-preset " + saved);
+    REQUIRE(save.exit_code == 0);
+    std::ifstream file(saved);
+    const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    CHECK(text.rfind("bparam ", 0) == 0);
+    CHECK(text.find("clashing_names.brdf\n") != std::string::npos);
+    CHECK(text.find("::begin parameters\ncolor color 0.35 0.1 0.1\n::end parameters\n") != std::string::npos);
+    CHECK(albedo(saved, "") == doctest::Approx(0.45).epsilon(1e-3));
+    // Malformed: no 'bparam' line, a value that is no number, a .bparam naming something else.
+    const std::string bad = temp_path("bad.bparam");
+    std::ofstream(bad) << "bparam " << dir << "clashing_names.brdf\n::begin parameters\ncolor color red 0 0\n::end parameters\n";
+    const Result not_number = run("check " + bad);
+    CHECK(not_number.exit_code == 1);
+    CHECK((not_number.out + not_number.err).find("bad.bparam:3: color: 'red' is not a number") != std::string::npos);
+    std::ofstream(bad) << "analytic\n";
+    const auto said = [&] { const Result r = run("check " + bad); return r.exit_code == 1 ? r.out + r.err : std::string(); };
+    CHECK(said().find("bad.bparam:1: a .bparam file starts with 'bparam FILE'") != std::string::npos);
+    std::ofstream(bad) << "bparam /etc/passwd\n";
+    CHECK(said().find("is no .brdf file") != std::string::npos);
+}
+
 TEST_CASE("malformed .brdf files exit 1 naming the .brdf's file and line") {
     const std::map<std::string, std::string> expected = {
         {"bad_parameter.brdf", "bad_parameter.brdf:3: maximum"},

@@ -17,8 +17,8 @@ void add_effect_options(CLI::App& command, EffectOptions& options) {
     command.add_option("--technique,-t", options.technique, "Technique to render (default: the effect's Default technique, else the first)");
     command.add_option("--set", options.sets, "Parameter value NAME=VALUE (0.5 | 1,0,0 | #rrggbb | true | FILE for a sampler)")
         ->allow_extra_args(false);
-    command.add_option("--preset", options.preset, "Load parameter values from a JSON preset (before --set)");
-    command.add_option("--save-preset", options.save_preset, "Save the parameter values used as a JSON preset");
+    command.add_option("--preset", options.preset, "Load parameter values from a JSON preset or a BRDF Explorer .bparam (before --set)");
+    command.add_option("--save-preset", options.save_preset, "Save the parameter values used as a JSON preset (NAME.bparam: as BRDF Explorer's parameter file)");
     command.add_option("--texture", options.textures,
                        "Texture file for a texture or a sampler NAME=FILE (replaces its ResourceName, or a legacy effect's placeholder)")
         ->allow_extra_args(false);
@@ -88,6 +88,7 @@ std::unique_ptr<render::EffectSession> open_effect_session(const EffectOptions& 
     if (!options.technique.empty()) session->select_technique(options.technique);
     if (!options.preset.empty()) {
         const effect::Preset preset = effect::load_preset(options.preset, session->effect(), session->values());
+        for (const auto& warning : preset.warnings) std::cerr << excerpt_lines(warning) << "\n";
         // The preset's technique applies unless the command line names one.
         if (options.technique.empty() && !preset.technique.empty()) session->select_technique(preset.technique);
     }

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace fxview {
 
@@ -25,6 +26,27 @@ namespace fxview {
 // Text from a file as it may appear inside a message: at most `max_chars` characters (longer text
 // ends in "..."), control characters as '?', so that one hostile token can neither flood a terminal
 // nor hide in it. Bytes of UTF-8 sequences are kept (labels may say "κ").
+// `text` without leading and trailing white space.
+inline std::string trim(const std::string& text) {
+    size_t begin = 0, end = text.size();
+    while (begin < end && std::isspace(static_cast<unsigned char>(text[begin]))) ++begin;
+    while (end > begin && std::isspace(static_cast<unsigned char>(text[end - 1]))) --end;
+    return text.substr(begin, end - begin);
+}
+
+// The white-space separated words of `text`.
+inline std::vector<std::string> words(const std::string& text) {
+    std::vector<std::string> out;
+    size_t at = 0;
+    while (true) {
+        while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at]))) ++at;
+        if (at == text.size()) return out;
+        const size_t start = at;
+        while (at < text.size() && !std::isspace(static_cast<unsigned char>(text[at]))) ++at;
+        out.push_back(text.substr(start, at - start));
+    }
+}
+
 inline std::string excerpt(std::string_view text, size_t max_chars = 40) {
     std::string out;
     for (size_t i = 0; i < text.size() && i < max_chars; ++i) {

@@ -13,20 +13,6 @@
 namespace fxview::effect {
 namespace {
 
-std::string trim(const std::string& text) {
-    size_t begin = 0, end = text.size();
-    while (begin < end && std::isspace(static_cast<unsigned char>(text[begin]))) ++begin;
-    while (end > begin && std::isspace(static_cast<unsigned char>(text[end - 1]))) --end;
-    return text.substr(begin, end - begin);
-}
-
-std::vector<std::string> words(const std::string& text) {
-    std::istringstream stream(text);
-    std::vector<std::string> out;
-    for (std::string word; stream >> word;) out.push_back(word);
-    return out;
-}
-
 bool is_identifier(const std::string& name) {
     if (name.empty() || name.size() > 64 || std::isdigit(static_cast<unsigned char>(name[0]))) return false;
     for (const char c : name)
@@ -35,7 +21,7 @@ bool is_identifier(const std::string& name) {
 }
 
 // A number as GLSL float text; throws at `where` if `word` is not one.
-std::string number(const std::string& word, const SourceLocation& where, const std::string& what) {
+std::string checked_number(const std::string& word, const SourceLocation& where, const std::string& what) {
     double value = 0;
     const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
     if (error != std::errc() || end != word.data() + word.size() || !std::isfinite(value))
@@ -60,7 +46,7 @@ std::string parameter_line(const std::vector<std::string>& w, const SourceLocati
     };
     if (type == "float") {
         expect(5, "float NAME MIN MAX DEFAULT");
-        const std::string low = number(w[2], where, "minimum"), high = number(w[3], where, "maximum"), value = number(w[4], where, "default");
+        const std::string low = checked_number(w[2], where, "minimum"), high = checked_number(w[3], where, "maximum"), value = checked_number(w[4], where, "default");
         if (std::stod(low) > std::stod(high)) throw EffectError(where, "the minimum " + low + " lies above the maximum " + high);
         return "uniform float " + w[1] + " < string UIName = \"" + w[1] + "\"; float UIMin = " + low + "; float UIMax = " + high +
                "; string UIGroup = \"BRDF\"; > = " + value + ";";
@@ -68,7 +54,7 @@ std::string parameter_line(const std::vector<std::string>& w, const SourceLocati
     if (type == "color") {
         expect(5, "color NAME R G B");
         return "uniform vec3 " + w[1] + " < string UIName = \"" + w[1] + "\"; string UIWidget = \"color\"; string UIGroup = \"BRDF\"; > = {" +
-               number(w[2], where, "red") + ", " + number(w[3], where, "green") + ", " + number(w[4], where, "blue") + "};";
+               checked_number(w[2], where, "red") + ", " + checked_number(w[3], where, "green") + ", " + checked_number(w[4], where, "blue") + "};";
     }
     if (type == "bool") {
         expect(3, "bool NAME DEFAULT");
@@ -147,7 +133,7 @@ bool is_brdf_file(const std::string& path) {
     return extension == ".brdf";
 }
 
-TranslatedLines translate_brdf_file(const std::string& path, const std::vector<std::string>& lines) {
+TranslatedLines translate_brdf_file(const std::string& path, const std::vector<std::string>& lines, ParameterOverrides* overrides) {
     TranslatedLines out;
     const auto emit = [&](std::string text, int origin) {
         out.lines.push_back(std::move(text));
@@ -221,6 +207,23 @@ TranslatedLines translate_brdf_file(const std::string& path, const std::vector<s
         }
         if (block != Block::Parameters) throw EffectError(where, "text outside a '::begin parameters' or '::begin shader' block: '" + excerpt(line) + "'");
         std::vector<std::string> w = words(trim(line.substr(0, line.find('#'))));  // a trailing # comment is allowed
+        if (overrides && w.size() == (w[0] == "bool" ? 3u : 5u))
+            if (const auto found = overrides->find(w[1]); found != overrides->end()) {
+                ParameterOverride& value = found->second;
+                if (value.type != w[0]) {
+                    out.warnings.push_back(value.where.str() + ": warning: '" + w[1] + "' is a " + w[0] + " in " + path + ", not a " + value.type + "; its value is ignored");
+                    value.used = true;  // said here; not again as missing
+                } else {
+                    // The value's numbers replace the default's, checked as the file's own (at the override's line).
+                    const SourceLocation& at = value.where;
+                    for (size_t k = 0; k < value.numbers.size(); ++k) {
+                        if (w[0] != "bool") checked_number(value.numbers[k], at, w[1]);
+                        w[w.size() - value.numbers.size() + k] = value.numbers[k];
+                    }
+                    if (w[0] == "bool" && w.back() != "0" && w.back() != "1") throw EffectError(at, "a bool's value is 0 or 1, not '" + excerpt(w.back()) + "'");
+                    value.used = true;
+                }
+            }
         if (w.size() >= 2 && is_reserved(w[1])) {
             warn(number, "parameter '" + w[1] + "' is called brdf_" + w[1] + " in fxview (--set brdf_" + w[1] + "=...): fxview's shaders hold that name");
             w[1] = "brdf_" + w[1];

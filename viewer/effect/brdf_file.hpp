@@ -9,8 +9,11 @@
 // .brdf's lines): parameters become annotated uniforms, the shader block top-level GLSL, and
 // effects/lib/brdf_file.glsl adds the techniques that render BRDF() (docs/effect-format.md).
 #pragma once
+#include <map>
 #include <string>
 #include <vector>
+
+#include "effect/source_map.hpp"
 
 namespace fxview::effect {
 
@@ -21,8 +24,18 @@ struct TranslatedLines {
     std::vector<std::string> warnings;
 };
 
+// A value given for a parameter from outside the file (a .bparam's, bparam_file.hpp), replacing its
+// default; `used` is set when the file has a parameter of that name and type.
+struct ParameterOverride {
+    std::string type;                  // float, bool or color
+    std::vector<std::string> numbers;  // as written: one for float and bool, three for color
+    SourceLocation where;
+    bool used = false;
+};
+using ParameterOverrides = std::map<std::string, ParameterOverride>;
+
 bool is_brdf_file(const std::string& path);
-// Throws EffectError at the offending line of `path` for a malformed file.
-TranslatedLines translate_brdf_file(const std::string& path, const std::vector<std::string>& lines);
+// Throws EffectError at the offending line of `path` (or of the override) for a malformed file.
+TranslatedLines translate_brdf_file(const std::string& path, const std::vector<std::string>& lines, ParameterOverrides* overrides = nullptr);
 
 }  // namespace fxview::effect

@@ -10,11 +10,13 @@
 
 #include "core/limits.hpp"
 #include "core/text.hpp"
+#include "effect/bparam_file.hpp"
 #include "effect/parser.hpp"
 
 namespace fxview::effect {
 
 void save_preset(const std::string& path, const Effect& effect, const std::string& technique, const ParameterValues& values) {
+    if (is_bparam_file(path)) return save_bparam_file(path, effect, values);
     nlohmann::json parameters = nlohmann::json::object();
     for (const auto& [name, numbers] : values.numbers)
         parameters[name] = numbers.size() == 1 ? nlohmann::json(numbers[0]) : nlohmann::json(numbers);
@@ -138,7 +140,46 @@ PresetScene load_preset_scene(const std::string& path, const ResourceLimits& lim
     return scene;
 }
 
+namespace {
+
+// A .bparam's values over `values`, by name (a reserved one as fxview's brdf_NAME); names the effect
+// lacks are warned about, as BRDF Explorer ignores them.
+Preset load_bparam_preset(const std::string& path, const Effect& effect, ParameterValues& values) {
+    const BparamFile bparam = read_bparam_file(path, effect.limits);
+    Preset preset;
+    preset.effect = bparam.brdf;
+    preset.warnings = bparam.warnings;
+    ParameterValues updated = values;
+    for (const auto& [name, value] : bparam.values) {
+        const Parameter* parameter = effect.find_parameter(name);
+        if (!parameter) parameter = effect.find_parameter("brdf_" + name);
+        const auto target = parameter ? updated.numbers.find(parameter->name) : updated.numbers.end();
+        if (!parameter || !parameter->semantic.empty() || target == updated.numbers.end() || target->second.size() != value.numbers.size()) {
+            preset.warnings.push_back(value.where.str() + ": warning: " + effect.path + " has no " + value.type + " parameter '" + name + "'; ignored");
+            continue;
+        }
+        std::vector<double> numbers;
+        for (const std::string& word : value.numbers) {
+            try {
+                size_t used = 0;
+                numbers.push_back(std::stod(word, &used));
+                if (used != word.size()) throw std::invalid_argument(word);
+            } catch (const std::exception&) {
+                throw Error(value.where.str() + ": '" + excerpt(word) + "' is not a number");
+            }
+        }
+        if (const std::string problem = value_problem(*parameter, numbers); !problem.empty()) throw Error(value.where.str() + ": " + problem);
+        target->second = numbers;
+    }
+    values = std::move(updated);
+    preset.values = values;
+    return preset;
+}
+
+}  // namespace
+
 Preset load_preset(const std::string& path, const Effect& effect, ParameterValues& values) {
+    if (is_bparam_file(path)) return load_bparam_preset(path, effect, values);
     std::string text;
     const nlohmann::json json = read_preset_json(path, effect.limits, text);
     // Messages name the line where the entry's key first appears.

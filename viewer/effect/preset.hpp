@@ -1,6 +1,6 @@
-// Parameter presets (like BRDF Explorer's .bparam): every editable value of an effect in a small
-// JSON file, {"effect": "...", "technique": "...", "parameters": {"Name": 0.5, "Color": [1,0,0],
-// "Sampler": "file.png"}}.
+// Parameter presets: every editable value of an effect in a small JSON file, {"effect": "...",
+// "technique": "...", "parameters": {"Name": 0.5, "Color": [1,0,0], "Sampler": "file.png"}}; or, for
+// a path ending in .bparam, BRDF Explorer's parameter file (bparam_file.hpp).
 #pragma once
 #include <map>
 #include <optional>
@@ -17,6 +17,7 @@ struct Preset {
     std::string effect;     // informational: the effect file the values were made for
     std::string technique;  // may be empty
     ParameterValues values;
+    std::vector<std::string> warnings;  // "file:line: warning: ..." (a .bparam's names the effect lacks)
 };
 
 void save_preset(const std::string& path, const Effect& effect, const std::string& technique, const ParameterValues& values);

@@ -1,4 +1,5 @@
 #include "effect/source_map.hpp"
+#include "effect/bparam_file.hpp"
 #include "effect/brdf_file.hpp"
 
 #include <cctype>
@@ -90,7 +91,23 @@ SourceMap SourceMap::load(const std::string& path, const std::vector<std::string
                           const FileAccessPolicy& access) {
     SourceMap map;
     std::vector<std::string> stack;
-    map.append_file(path, {include_dirs, limits, access}, stack, nullptr);
+    if (!is_bparam_file(path)) {
+        map.append_file(path, {include_dirs, limits, access}, stack, nullptr);
+        return map;
+    }
+    // A BRDF Explorer parameter file: the .brdf it names, with its values as the defaults.
+    BparamFile bparam = read_bparam_file(path, limits);
+    if (!is_brdf_file(bparam.brdf)) throw EffectError({path, 1}, "'" + excerpt(bparam.brdf, 200) + "' is no .brdf file (a .bparam holds values for one)");
+    // The .brdf it names is the file the user chose, as when opened itself (only a .brdf: no other file
+    // can be read this way); its own includes stay under `access`.
+    FileAccessPolicy with_brdf = access;
+    with_brdf.allow_file(bparam.brdf);
+    map.warnings_ = bparam.warnings;
+    map.append_file(bparam.brdf, {include_dirs, limits, with_brdf, &bparam.values}, stack, nullptr);
+    for (const auto& [name, value] : bparam.values)
+        if (!value.used)
+            map.warnings_.push_back(value.where.str() + ": warning: " + bparam.brdf + " has no " + value.type + " parameter '" + name + "'; ignored");
+    map.files_.push_back(path);  // watched for changes too
     return map;
 }
 
@@ -137,7 +154,7 @@ void SourceMap::append_file(const std::string& path, const LoadContext& context,
     // A BRDF Explorer file becomes effect text first, each line keeping its line in the .brdf.
     std::vector<int> origins;
     if (!included_from && is_brdf_file(path)) {
-        TranslatedLines translated = translate_brdf_file(path, lines);
+        TranslatedLines translated = translate_brdf_file(path, lines, context.overrides);
         warnings_.insert(warnings_.end(), translated.warnings.begin(), translated.warnings.end());
         lines = std::move(translated.lines);
         origins = std::move(translated.origins);

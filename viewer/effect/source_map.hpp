@@ -2,6 +2,7 @@
 // where it came from. GLSL cut from it carries #line directives, so that compiler messages can be
 // mapped back to `file:line` of the effect or the include.
 #pragma once
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -69,6 +70,7 @@ private:
         const std::vector<std::string>& include_dirs;
         const ResourceLimits& limits;
         const FileAccessPolicy& access;
+        std::map<std::string, struct ParameterOverride>* overrides = nullptr;  // a .bparam's values for the .brdf it names
     };
     void append_file(const std::string& path, const LoadContext& context, std::vector<std::string>& stack,
                      const SourceLocation* included_from);

@@ -8,12 +8,6 @@
 namespace fxview::legacy {
 namespace {
 
-std::string trim(std::string s) {
-    s.erase(0, s.find_first_not_of(" \t\r\n"));
-    s.erase(s.find_last_not_of(" \t\r\n") + 1);
-    return s;
-}
-
 struct Command {
     std::string key, value;  // key lower case
     std::string text;        // as written, for messages

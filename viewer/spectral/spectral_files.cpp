@@ -12,13 +12,6 @@
 namespace fxview::spectral {
 namespace {
 
-std::vector<std::string> words(const std::string& line) {
-    std::vector<std::string> out;
-    std::istringstream in(line);
-    for (std::string w; in >> w;) out.push_back(w);
-    return out;
-}
-
 bool to_double(std::string text, double& value) {
     if (!text.empty() && text.front() == '"' && text.back() == '"' && text.size() >= 2) text = text.substr(1, text.size() - 2);
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
