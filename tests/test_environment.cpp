@@ -245,6 +245,19 @@ TEST_CASE("bad environments: unknown names and files exit non-zero naming them")
     CHECK(tone.err.find("pbr-neutral") != std::string::npos);
 }
 
+TEST_CASE("an environment that an effect's shaders do not read is said, never silently ignored") {
+    const std::string effects = std::string(FXVIEW_SOURCE_EFFECTS_DIR);
+    const std::string out = " --environment sky --size 16x16 --out " + temp_path("unused-environment.png");
+    for (const std::string spectral : {"/spectral/cd.fx", "/spectral/thinfilm.fx", "/spectral/wavelength.fx"}) {
+        const Result r = run("render " + effects + spectral + out);
+        CHECK(r.exit_code == 0);
+        CHECK(r.err.find("lit by the point light only; the environment 'sky'") != std::string::npos);
+    }
+    // An effect that is lit by it says nothing of the kind; without --environment neither does a spectral one.
+    CHECK(run("render " + effects + "/brdf/analytic.fx" + out).err.find("point light only") == std::string::npos);
+    CHECK(run("render " + effects + "/spectral/cd.fx --size 16x16 --out " + temp_path("no-environment.png")).err.find("point light only") == std::string::npos);
+}
+
 TEST_CASE("compare --ground-truth: the split sum is exact in uniform light and its error elsewhere is reported") {
     const std::string analytic = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/analytic.fx";
     const auto truth_of = [&](const std::string& options) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <exception>
 #include <filesystem>
+#include <iostream>
 #include <limits>
 #include <mutex>
 #include <thread>
@@ -114,6 +115,8 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
     if (!technique.empty()) effect_options.technique = technique;
     const auto opened = open_effect_session(effect_options);
     render::EffectSession& session = *opened;
+    if (const std::string warning = session.unused_environment_warning(request.scene.environment); !warning.empty())
+        std::cerr << warning << "\n";
 
     CompareResult result;
     result.technique = session.technique();

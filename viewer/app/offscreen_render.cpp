@@ -4,6 +4,8 @@
 
 #include "core/error.hpp"
 
+#include <iostream>
+
 #include "effect/preset.hpp"
 #include "gl/render_target.hpp"
 #include "render/debug_renderer.hpp"
@@ -38,6 +40,8 @@ image::FloatImage render_offscreen(const RenderRequest& request) {
         const auto session = open_effect_session(request.effect);
         if (!request.effect.save_preset.empty())
             effect::save_preset(request.effect.save_preset, session->effect(), session->technique(), session->values());
+        if (const std::string warning = session->unused_environment_warning(request.scene.environment); !warning.empty())
+            std::cerr << warning << "\n";
         session->render(request.scene, target);
         if (!request.scene.environment.source.empty()) draw_environment(session->environment(request.scene.environment));
     }

@@ -136,6 +136,12 @@ const EnvironmentMaps& EffectSession::environment(const scene::Environment& envi
     return *environment_;
 }
 
+std::string EffectSession::unused_environment_warning(const scene::Environment& environment) const {
+    if (environment.source.empty() || loaded_->resources->uses_environment()) return "";
+    return path_ + ": warning: this effect's techniques are lit by the point light only; the environment '" + environment.source +
+           "' fills the background but does not light them";
+}
+
 void EffectSession::render(const scene::Scene& scene, const gl::RenderTarget& target, FrameTiming timing, bool clear_target) {
     if (loaded_->resources->uses_environment()) loaded_->resources->set_environment(&environment(scene.environment));
     renderer_.render(scene, loaded_->techniques.at(technique_), values_, *loaded_->resources, target, timing, clear_target);

@@ -47,6 +47,9 @@ public:
     // The scene environment's maps, made (lighting/, about a second) when the source changes; the
     // frame's effect samples them (render() calls this). Throws Error naming a bad source.
     const EnvironmentMaps& environment(const scene::Environment& environment);
+    // Empty when the effect's shaders read the environment (or none is set); otherwise a warning that
+    // it only fills the background: said, never silently ignored.
+    std::string unused_environment_warning(const scene::Environment& environment) const;
     // What a technique's compiled passes say about it, found once when it is compiled (the viewer
     // asks every frame). Unknown techniques: nothing read, not animated, no textures of their own.
     struct TechniqueTraits {
