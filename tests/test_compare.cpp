@@ -367,3 +367,36 @@ TEST_CASE("a measured BRDF on a mesh: the table lookup matches the CPU sampler, 
     CHECK(difference < 0.03 * sum);
 }
 
+
+TEST_CASE("CombinedPhong's metal switch: a metal's highlight has the object's colour, a dielectric's the light's") {
+    // The thesis' text (after eq. 32), not the reference code: checked against the diffuse colour,
+    // which both share, and the light's white. D65 maps to sRGB's white point, so a dielectric's
+    // highlight under it is grey within the CMF tables' sampling (measured 0.3 %; 2 % allowed); the
+    // red object (TCS09) gives channel ratios far apart, so either swap fails by tenfold.
+    context::ContextOptions context_options;
+    context_options.backend = test::test_backend();
+    const auto context = context::create_context(context_options);
+    const app::RenderRequest request = sphere_request();
+    const auto brightest = [&](std::vector<std::string> sets) {
+        app::EffectOptions options = request.effect;
+        options.technique = "CombinedPhong";
+        for (const char* set : {"LightSpectrum=D65", "ObjectSpectrum=TCS09", "Brightness=0.5"}) sets.push_back(set);
+        options.sets = std::move(sets);
+        auto session = app::open_effect_session(options);
+        gl::RenderTarget target({128, 128, 1, 0});
+        session->render(request.scene, target);
+        const image::FloatImage image = target.read_color(0);
+        glm::dvec3 best(0.0);
+        for (size_t i = 0; i + 3 < image.data.size(); i += 4) {
+            const glm::dvec3 pixel(image.data[i], image.data[i + 1], image.data[i + 2]);
+            if (pixel.x + pixel.y + pixel.z > best.x + best.y + best.z) best = pixel;
+        }
+        REQUIRE(best.x + best.y + best.z > 0.0);
+        return best / (best.x + best.y + best.z);  // chromaticity in linear sRGB
+    };
+    const glm::dvec3 object = brightest({"Kd=1", "Ks=0"});
+    CHECK(object.x > 2.0 * object.y);  // TCS09 is a saturated red
+    const glm::dvec3 metal = brightest({"Kd=0", "Ks=1", "Metal=true"}), dielectric = brightest({"Kd=0", "Ks=1", "Metal=false"});
+    CHECK(glm::length(metal - object) < 0.02);
+    CHECK(glm::length(dielectric - glm::dvec3(1.0 / 3.0)) < 0.02);
+}

@@ -16,7 +16,7 @@ uniform float Kd < string UIName = "Diffuse kd"; float UIMin = 0; float UIMax = 
 uniform float Ks < string UIName = "Specular ks"; float UIMin = 0; float UIMax = 1; string UIGroup = "Lighting"; > = 0.4;
 uniform float Power < string UIName = "Specular power"; float UIMin = 1; float UIMax = 256; string UIGroup = "Lighting"; > = 32.0;
 uniform bool Metal < string UIName = "Metal"; string UIGroup = "Lighting";
-                     string UIHelp = "On: the highlight takes the light's colour, as on a metal; off: the object's colour"; > = false;
+                     string UIHelp = "On: a metal, whose highlight takes the object's colour; off: a dielectric, whose highlight takes the light's colour"; > = false;
 
 struct Geometry { float lambert; float phong; float blinn; };
 
@@ -146,7 +146,10 @@ GLSLShader CombinedFS {
     }
 }
 
-// Code 11: metal = RGB(xyz_obj * lambert) + RGB(xyz_light * spec), else RGB(xyz_obj * (lambert + spec)).
+// Code 11's two branches, with the switch as the thesis' text (ch. 4.2, after eq. 32) and physics
+// have it: a metal's highlight has the object's colour, RGB(xyz_obj * (lambert + spec)); a
+// dielectric's the light's, RGB(xyz_obj * lambert) + RGB(xyz_light * spec). The listing itself
+// runs them the other way round (its MetalObject picks the light-coloured one).
 GLSLShader CombinedPhongFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
@@ -155,8 +158,8 @@ GLSLShader CombinedPhongFS {
         Geometry g = geometry(fs_in.world_position, fs_in.normal);
         vec3 xyz_object, xyz_light;
         integrate_combined(xyz_object, xyz_light);
-        vec3 rgb = Metal ? xyz_to_srgb(xyz_object * Kd * g.lambert) + xyz_to_srgb(xyz_light * Ks * g.phong)
-                         : xyz_to_srgb(xyz_object * (Kd * g.lambert + Ks * g.phong));
+        vec3 rgb = Metal ? xyz_to_srgb(xyz_object * (Kd * g.lambert + Ks * g.phong))
+                         : xyz_to_srgb(xyz_object * Kd * g.lambert) + xyz_to_srgb(xyz_light * Ks * g.phong);
         color = vec4(rgb, 1.0);
         fx_capture();
     }

@@ -93,7 +93,8 @@ std::map<std::string, Reference> spectral_references() {
     all.emplace("Blinn", shaded(2, false, false));
     all.emplace("Combined", shaded(0, false, true));
 
-    // Code 11's metal switch: a metal's highlight has the light's colour, a dielectric's the object's.
+    // Code 11's metal switch as the thesis' text has it: a metal's highlight has the object's colour,
+    // a dielectric's the light's (the listing swaps the branches).
     Reference phong_metal = from_lobe_shader([](const ShadingInput& in, const ReferenceContext& c, double rounding) {
         const SpectralSetup s = spectral_setup(c);
         const int light_index = static_cast<int>(c.number("LightSpectrum")), object_index = static_cast<int>(c.number("ObjectSpectrum"));
@@ -101,7 +102,7 @@ std::map<std::string, Reference> spectral_references() {
         const double diffuse = c.number("Kd") * lobe.lambert, specular = c.number("Ks") * lobe.phong;
         const auto light = [&](int nm) { return spectral::packed_value(*s.spectra, light_index, nm); };
         const auto object = [&](int nm) { return spectral::packed_value(*s.spectra, object_index, nm); };
-        if (c.number("Metal") != 0.0) {
+        if (c.number("Metal") == 0.0) {
             const auto body = to_rgba(integrate(s, true, [&](int nm) { return light(nm) * object(nm) * diffuse; }), s.mapping);
             const auto highlight = to_rgba(integrate(s, true, [&](int nm) { return light(nm) * specular; }), s.mapping);
             return std::array<double, 4>{body[0] + highlight[0], body[1] + highlight[1], body[2] + highlight[2], 1.0};
