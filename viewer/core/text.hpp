@@ -23,9 +23,6 @@ inline std::string lower_extension(const std::string& path) {
 
 namespace fxview {
 
-// Text from a file as it may appear inside a message: at most `max_chars` characters (longer text
-// ends in "..."), control characters as '?', so that one hostile token can neither flood a terminal
-// nor hide in it. Bytes of UTF-8 sequences are kept (labels may say "κ").
 // `text` without leading and trailing white space.
 inline std::string trim(const std::string& text) {
     size_t begin = 0, end = text.size();
@@ -47,6 +44,9 @@ inline std::vector<std::string> words(const std::string& text) {
     }
 }
 
+// Text from a file as it may appear inside a message: at most `max_chars` characters (longer text
+// ends in "..."), control characters as '?', so that one hostile token can neither flood a terminal
+// nor hide in it. Bytes of UTF-8 sequences are kept (labels may say "κ").
 inline std::string excerpt(std::string_view text, size_t max_chars = 40) {
     std::string out;
     for (size_t i = 0; i < text.size() && i < max_chars; ++i) {
