@@ -43,11 +43,13 @@ run: build
 	$(FXVIEW) compare effects/brdf/analytic.fx --technique PBR --environment studio --ground-truth --size 96x96 --heatmap out/compare-ibl.png
 	$(FXVIEW) render effects/legacy/wavelength.cgfx --mesh knot --size 512x512 --out out/knot-thesis-cg.png
 	$(FXVIEW) render tests/effects/legacy/glow.fx --mesh sphere --size 512x512 --out out/sphere-legacy-glow.png
-	$(FXVIEW) render effects/spectral/cd.fx --technique Grating --mesh disc --camera-rotate 50,0,0 --size 512x512 --out out/disc-cd.png
+	$(FXVIEW) render effects/spectral/cd.fx --mesh disc --camera-rotate 50,0,0 --light-angle 15 --size 512x512 --out out/disc-cd.png
+	$(FXVIEW) render effects/spectral/cd.fx --mesh disc --camera-rotate 50,0,0 --light-angle 2 --size 512x512 --out out/disc-cd-lamp.png
 	$(FXVIEW) spectra plot D65 A F11 TCS09 --out out/spectra.png
 	$(FXVIEW) compare effects/spectral/wavelength.fx --heatmap out/compare.png
 	$(FXVIEW) compare effects/spectral/thinfilm.fx --size 96x96 --heatmap out/compare-thinfilm.png
 	$(FXVIEW) compare effects/spectral/cd.fx --mesh disc --camera-rotate 50,0,0 --size 96x96 --heatmap out/compare-cd.png
+	$(FXVIEW) compare effects/spectral/cd.fx --technique Orders --mesh disc --camera-rotate 50,0,0 --light-angle 15 --size 96x96 --heatmap out/compare-cd-ceiling.png
 	$(FXVIEW) compare effects/brdf/analytic.fx --heatmap out/compare-brdf.png
 	$(FXVIEW) compare effects/examples/textured.fx --mesh torus --heatmap out/compare-textured.png
 	$(FXVIEW) render --mesh sphere --size 256x256 --out out/sphere-normals.exr

@@ -114,6 +114,10 @@ TEST_CASE("nonsense arguments exit with 2 and say what is wrong") {
         {"pick --size 64x64 --at 64,0", "outside"},
         {"pick --at 1,2,3", "--at"},
         {"info --backend metal", "unknown backend"},
+        {"render --light-radius 1 --light-angle 5", "excludes"},
+        {"render --light-radius -1", "--light-radius"},
+        {"render --light-angle 90", "--light-angle"},
+        {"render --light-position 0,0,0 --light-angle 10", "--light-radius instead"},
     };
     for (const auto& [arguments, expected] : cases) {
         const std::string shown = arguments;
@@ -137,6 +141,16 @@ TEST_CASE("I/O and data failures exit with 1 naming the file") {
     CHECK(r.err.find("broken.obj") != std::string::npos);
     r = run("render --out /proc/forbidden/x.png");
     CHECK(r.exit_code == 1);
+}
+
+TEST_CASE("a sized light is said where a technique draws it as a point, and not where it is drawn") {
+    const std::string effects = FXVIEW_SOURCE_EFFECTS_DIR;
+    const Result point = run("render " + effects + "/spectral/wavelength.fx --light-radius 0.5 --size 16x16 --out " + temp_path("sized.png"));
+    CHECK(point.exit_code == 0);
+    CHECK(point.err.find("treats the light as a point") != std::string::npos);
+    const Result orders = run("render " + effects + "/spectral/cd.fx --mesh disc --light-angle 15 --size 16x16 --out " + temp_path("sized.png"));
+    CHECK(orders.exit_code == 0);
+    CHECK(orders.err.find("warning") == std::string::npos);
 }
 
 TEST_CASE("list --json describes debug.fx: the four debug techniques and Plain, with parameters") {

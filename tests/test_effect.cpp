@@ -373,7 +373,7 @@ TEST_CASE("an effect opens on its technique annotated Default, else on its first
           effect::load_effect(kEffects + "/debug.fx", load_options()).techniques.front().name);
     // The shipped effects open on their most representative technique, not on the thesis' simplest.
     const std::pair<const char*, const char*> shipped[] = {{"/spectral/wavelength.fx", "Phong"}, {"/spectral/thinfilm.fx", "FresnelExact"},
-                                                           {"/spectral/cd.fx", "Grating"}, {"/brdf/analytic.fx", "PBR"}};
+                                                           {"/spectral/cd.fx", "Orders"}, {"/brdf/analytic.fx", "PBR"}};
     for (const auto& [file, technique] : shipped) {
         CAPTURE(file);
         CHECK(effect::load_effect(kEffects + file, load_options()).default_technique().name == technique);

@@ -6,12 +6,14 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <numbers>
 #include <vector>
 
 #include "core/error.hpp"
 #include "optics/film_series.hpp"
 #include "optics/grating.hpp"
+#include "optics/grating_orders.hpp"
 #include "optics/prepared_stack.hpp"
 #include "optics/thesis_models.hpp"
 #include "optics/thin_film.hpp"
@@ -285,4 +287,89 @@ TEST_CASE("a prepared stack: the lossless shortcut and shared phases give the ge
                 CHECK(s == doctest::Approx(prepared.response(wavelength, Polarisation::S).reflectance).epsilon(1e-12));
                 CHECK(p == doctest::Approx(prepared.response(wavelength, Polarisation::P).reflectance).epsilon(1e-12));
             }
+}
+
+TEST_CASE("a CD's diffraction orders: l_m is where the N-slit sum peaks, and the efficiencies conserve energy") {
+    // Views over the hemisphere (θ 0..89°, φ 0..330°), wavelengths across the visible, CD and DVD spacings.
+    const GratingOrderModel cd;
+    for (const double spacing : {1600.0, 740.0})
+        for (double theta = 0; theta < 90; theta += 11)
+            for (double phi = 0; phi < 360; phi += 30)
+                for (const double lambda : {380.0, 455.0, 550.0, 780.0}) {
+                    CAPTURE(spacing); CAPTURE(theta); CAPTURE(phi); CAPTURE(lambda);
+                    const double t = theta * std::numbers::pi / 180, p = phi * std::numbers::pi / 180;
+                    const glm::dvec3 view(std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t));
+                    const OrderRange range = propagating_orders(view, lambda, spacing);
+                    // The range holds exactly the m whose l_m exists (brute force over m = -20..20).
+                    for (int m = -20; m <= 20; ++m)
+                        CHECK(order_incidence(view, m, lambda, spacing).has_value() == (m >= range.first && m <= range.last));
+                    for (int m = range.first; m <= range.last; ++m) {
+                        const glm::dvec3 l = *order_incidence(view, m, lambda, spacing);
+                        CHECK(glm::length(l) == doctest::Approx(1.0).epsilon(kExact));
+                        CHECK(l.z > 0);
+                        // grating.hpp's convention, x = d (l + v)·g / λ: the tracks' phasors add up (x = m),
+                        // and along the tracks the phase y = d (l + v)·t / λ vanishes (the segment's peak).
+                        const double x = spacing * (l.x + view.x) / lambda;
+                        CHECK(grating_intensity(x, 40) == doctest::Approx(1.0).epsilon(1e-9));  // 1e-9: sin near its zeros
+                        CHECK(std::abs(l.y + view.y) < kExact);
+                    }
+                    // Σ η_m = the coating's reflectance, for any pit width and mirror share; none negative.
+                    for (const double pit : {0.05, 0.35, 0.5, 0.95})
+                        for (const double zero : {0.0, 0.35, 1.0}) {
+                            GratingOrderModel model = cd;
+                            model.spacing_nm = spacing, model.pit_fraction = pit, model.zero_order = zero;
+                            const std::vector<double> eta = order_efficiencies(model, range);
+                            double sum = 0;
+                            for (const double e : eta) {
+                                sum += e;
+                                CHECK(e >= 0);
+                            }
+                            CHECK(sum == doctest::Approx(model.reflectance).epsilon(kExact));
+                            if (range.first < range.last) CHECK(eta[size_t(-range.first)] == doctest::Approx(zero * model.reflectance));
+                        }
+                }
+    // Light along the normal, d = 1600 nm: 500 nm leaves in order 1 at sin θ = λ/d = 0.3125 (Hecht eq. 10.61),
+    // so a viewer there sees order +1 arriving from the normal (the order leaves along l_x = mλ/d − v_x).
+    const glm::dvec3 view(-0.3125, 0, std::sqrt(1 - 0.3125 * 0.3125));
+    const glm::dvec3 l = *order_incidence(view, -1, 500.0, 1600.0);
+    CHECK(l.x == doctest::Approx(0.0).scale(1.0).epsilon(kExact));
+    CHECK(l.z == doctest::Approx(1.0).epsilon(kExact));
+    // Scalar theory's weights: with pits half the period, even orders vanish (sinc²(m/2) = 0 for even m ≠ 0).
+    GratingOrderModel half = cd;
+    half.pit_fraction = 0.5;
+    const std::vector<double> eta = order_efficiencies(half, OrderRange{-3, 3});
+    CHECK(eta[1] < 1e-30);  // m = -2
+    CHECK(eta[5] < 1e-30);  // m = +2
+    CHECK(eta[2] == doctest::Approx(eta[4]).epsilon(kExact));  // ±1 alike
+    CHECK(eta[2] / eta[0] == doctest::Approx(9.0).epsilon(1e-12));  // sinc²(1/2) / sinc²(3/2) = 9
+}
+
+TEST_CASE("a sphere light's radiance through a softened order holds the point light's irradiance") {
+    // ∫ L cos δ dω over the cap around a light at the zenith, in angles (dω = 2π sin δ dδ, the chord
+    // c = 2 sin(δ/2)), by the midpoint rule: 200000 steps over at most 0.6 rad, error ~1e-10 where L
+    // is smooth, and below 1e-7 with the ramp's kinks (each off by O(h²) in its step).
+    const auto irradiance = [](double alpha, double width) {
+        const int steps = 200000;
+        const double edge = light_edge_chord(std::sin(alpha)), reach = 2 * std::asin(std::min(1.0, 0.5 * (edge + 0.5 * width))),
+                     h = reach / steps;
+        double sum = 0;
+        for (int i = 0; i < steps; ++i) {
+            const double d = (i + 0.5) * h;
+            sum += sphere_light_radiance(2 * std::sin(d / 2), edge, width) * std::cos(d) * 2 * std::numbers::pi * std::sin(d) * h;
+        }
+        return sum;
+    };
+    for (const double alpha : {0.0, 0.01, 0.1, 0.26, 0.44, 1.0})
+        for (const double width : {0.0, 1e-4, 0.01, 0.05, 0.2}) {
+            if (alpha == 0 && width == 0) continue;  // a true point: no radiance to integrate
+            CAPTURE(alpha); CAPTURE(width);
+            CHECK(irradiance(alpha, width) == doctest::Approx(1.0).epsilon(1e-6));  // 1e-6: the quadrature's kinks, above
+        }
+    // The edge's chord against 2 sin(α/2) (the form without cancellation must not lose small lights).
+    for (const double alpha : {1e-6, 0.26, 1.0, std::numbers::pi / 2})
+        CHECK(light_edge_chord(std::sin(alpha)) == doctest::Approx(2 * std::sin(alpha / 2)).epsilon(kExact));
+    // Sharp: the uniform disc 1 / (π sin²α) inside, nothing outside.
+    const double edge = light_edge_chord(std::sin(0.26));
+    CHECK(sphere_light_radiance(0.5 * edge, edge, 0) == doctest::Approx(1 / (std::numbers::pi * std::sin(0.26) * std::sin(0.26))).epsilon(kExact));
+    CHECK(sphere_light_radiance(1.01 * edge, edge, 0) == 0.0);
 }

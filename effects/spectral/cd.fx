@@ -8,6 +8,11 @@
 // (N tracks across, N·d along them), the phase across the tracks (orders where d (l + v)·g = mλ) and
 // along them (all orders lie where (l + v)·t = 0; the zero order is the mirror highlight), averaged
 // over each pixel's footprint. docs/diffraction.md.
+// Orders (the default): an energy-true grating lit by the scene's light as what it is, a point or a
+// sphere (a lamp, a ceiling panel, a window): each order m reflects the light like a mirror with its
+// own efficiency, turned by the grating equation (viewer/optics/grating_orders.hpp), so a sized
+// light shows a rainbow sector and the mirror order the light's own colour; the number of coherently
+// lit tracks sets each order's width, not its energy.
 // CPU references: viewer/reference/cd_reference.cpp.
 #include "standard.glsl"
 #include "spectral.glsl"
@@ -25,6 +30,14 @@ uniform float Threshold < string UIName = "Threshold"; float UIMin = 0; float UI
                           string UIHelp = "Intensities below it are cut to 0"; > = 0.5;
 uniform int Tracks < string UIName = "Illuminated tracks N"; int UIMin = 1; int UIMax = 200; string UIGroup = "Grating";
                      string UIHelp = "Tracks lit coherently (a square patch N tracks wide and as long): more tracks give narrower orders and a smaller mirror highlight. Orders narrower than a pixel are averaged over it, so they stay smooth but dim; raise Brightness to see them"; > = 60;
+
+uniform float LightRadius : LIGHTRADIUS;
+uniform float Reflectance < string UIName = "Coating reflectance"; float UIMin = 0; float UIMax = 1; string UIGroup = "Diffraction orders";
+                            string UIHelp = "Of the disc's metal coating: the light all orders together reflect"; > = 0.9;
+uniform float ZeroOrder < string UIName = "Mirror share"; float UIMin = 0; float UIMax = 1; string UIGroup = "Diffraction orders";
+                          string UIHelp = "Part of the reflected light in the plain mirror image of the lamp; the rest goes into the rainbow orders"; > = 0.35;
+uniform float PitFraction < string UIName = "Pit width"; float UIMin = 0.05; float UIMax = 0.95; string UIGroup = "Diffraction orders";
+                            string UIHelp = "Part of each track period the pits fill: how the rainbow light is shared between the first, second, third ... orders"; > = 0.35;
 
 // The surroundings mirrored in the disc (fig. 34, 36): a cube map added in RGB after the spectral part.
 texture EnvironmentTexture < string ResourceName = "sky_cross.png"; string ResourceType = "CUBE"; string ColorSpace = "sRGB"; >;
@@ -172,5 +185,88 @@ GLSLShader GratingFS {
     }
 }
 
+// Orders past 32 are not drawn: with d up to 5000 nm, light of 360 nm has no more than 28.
+const int kMaxOrder = 32;
+
+float sinc_squared_weight(int m) {
+    float a = PI * float(m) * PitFraction;
+    return m == 0 ? 1.0 : pow(sin(a) / a, 2.0);
+}
+
+// The sphere light measured in chords (no inverse trigonometry: its GPU approximations shift a sharp
+// edge visibly), as viewer/optics/grating_orders.hpp: the edge's chord 2 sin(α/2) from sin α, and the
+// radiance at chord c from the centre of a light of unit irradiance at normal incidence, its image
+// softened by a ramp of width w around the edge and divided by the ramp's exact irradiance.
+float light_edge_chord(float sin_alpha) {
+    float s = clamp(sin_alpha, 0.0, 1.0);
+    return s * sqrt(2.0 / (1.0 + sqrt(1.0 - s * s)));
+}
+
+float sphere_light_radiance(float chord, float edge, float width) {
+    float a = edge - 0.5 * width, b = edge + 0.5 * width;
+    if (chord >= b) return 0.0;
+    float profile = clamp((b - chord) / width, 0.0, 1.0);
+    float moment = a >= 0.0 ? a * a / 2.0 - a * a * a * a / 8.0 +
+                                  width * (a / 2.0 + width / 6.0 - a * a * a / 4.0 - a * a * width / 4.0 - a * width * width / 8.0 -
+                                           width * width * width / 40.0)
+                            : (b * b * b / 6.0 - b * b * b * b * b / 40.0) / width;
+    return moment > 0.0 ? profile / (2.0 * PI * moment) : 0.0;
+}
+
+GLSLShader OrdersFS {
+    #include "fragment_inputs.glsl"
+    #include "capture.glsl"
+    layout(location = 0) out vec4 color;
+    void main() {
+        Disc d = disc_at(fs_in.world_position, fs_in.normal, fs_in.tangent, fs_in.uv);
+        float edge = light_edge_chord(max(LightRadius, 0.0) / length(LightPosition - fs_in.world_position));
+        vec3 view = vec3(dot(d.v, d.across), dot(d.v, d.along), dot(d.v, d.n));
+        vec3 light = vec3(dot(d.l, d.across), dot(d.l, d.along), dot(d.l, d.n));
+        // How far the view and the track direction turn across the pixel: each order's image is
+        // spread over that besides its coherence width.
+        float view_spread = length(dFdxFine(d.v)) + length(dFdyFine(d.v));
+        float turn_spread = length(dFdxFine(d.across)) + length(dFdyFine(d.across));
+        // sinc²(m a) and its sums over m = 1..k: the shares of the orders m != 0 (symmetric in m).
+        float weights[kMaxOrder + 1], shares[kMaxOrder + 1];
+        weights[0] = shares[0] = 0.0;
+        for (int m = 1; m <= kMaxOrder; ++m) {
+            weights[m] = sinc_squared_weight(m);
+            shares[m] = shares[m - 1] + weights[m];
+        }
+        float diffuse = max(dot(d.n, d.l), 0.0);
+        float tracks = float(max(Tracks, 1)), reach = sqrt(max(1.0 - view.y * view.y, 0.0)), spacing = max(TrackSpacing, 1.0);
+        vec3 xyz = vec3(0.0);
+        float ybar_sum = 0.0;
+        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+            float ratio = float(nm) / spacing, orders_per_unit = spacing / float(nm);  // λ / d and d / λ
+            // The propagating orders: |m λ/d - v_x|² + v_y² < 1.
+            int first = clamp(int(floor((view.x - reach) * orders_per_unit)) + 1, -kMaxOrder, 0);
+            int last = clamp(int(ceil((view.x + reach) * orders_per_unit)) - 1, 0, kMaxOrder);
+            float others = shares[-first] + shares[last];
+            float widest = ratio / tracks + view_spread + float(max(-first, last)) * ratio * turn_spread;
+            // Only orders whose direction can fall on the light: |l_x - c_x| <= |l - c|.
+            float near = edge + 0.5 * widest;
+            int from = max(first, int(ceil((view.x + light.x - near) * orders_per_unit)));
+            int to = min(last, int(floor((view.x + light.x + near) * orders_per_unit)));
+            float radiance = 0.0;
+            for (int m = from; m <= to && view.z > 0.0; ++m) {
+                vec2 tangential = vec2(float(m) * ratio - view.x, -view.y);
+                float z2 = 1.0 - dot(tangential, tangential);
+                if (z2 <= 0.0) continue;
+                vec3 incidence = tangential.x * d.across + tangential.y * d.along + sqrt(z2) * d.n;
+                float chord = length(incidence - d.l);
+                float width = ratio / tracks + view_spread + float(abs(m)) * ratio * turn_spread;
+                float efficiency = m == 0 ? (others > 0.0 ? ZeroOrder : 1.0) : (1.0 - ZeroOrder) * weights[abs(m)] / others;
+                radiance += efficiency * sphere_light_radiance(chord, edge, width);
+            }
+            add_sample(xyz, ybar_sum, nm, Reflectance * radiance, diffuse);
+        }
+        color = vec4(xyz_to_srgb(xyz * normalisation(ybar_sum) * Brightness) + environment(d), 1.0);
+        fx_capture();
+        fx_capture_footprint = vec4(view_spread, turn_spread, 0.0, 0.0);
+    }
+}
+
+technique Orders < bool Default = true; string UIName = "Diffraction orders (lamps, energy-true)"; > { pass p0 { VertexShader = StandardVS; FragmentShader = OrdersFS; } }
 technique Thesis < string UIName = "Simple model (hard cut)"; > { pass p0 { VertexShader = StandardVS; FragmentShader = ThesisFS; } }
-technique Grating < bool Default = true; > { pass p0 { VertexShader = StandardVS; FragmentShader = GratingFS; } }
+technique Grating < string UIName = "Grating (point light, peak 1)"; > { pass p0 { VertexShader = StandardVS; FragmentShader = GratingFS; } }

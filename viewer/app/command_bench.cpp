@@ -95,7 +95,7 @@ CommandRunner add_bench_command(CLI::App& app) {
         const auto context = context::create_context(context_options);
         const auto info = context::query_context_info();
         const auto session = open_effect_session(request.effect);
-        if (const std::string warning = session->unused_environment_warning(request.scene.environment); !warning.empty())
+        for (const std::string& warning : session->scene_warnings(request.scene))
             std::cerr << warning << "\n";
         const std::vector<std::string> techniques = chosen_techniques(request, o->techniques);
         double first_wall = 0;  // the speed-up's reference: the first technique's median

@@ -115,7 +115,7 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
     if (!technique.empty()) effect_options.technique = technique;
     const auto opened = open_effect_session(effect_options);
     render::EffectSession& session = *opened;
-    if (const std::string warning = session.unused_environment_warning(request.scene.environment); !warning.empty())
+    for (const std::string& warning : session.scene_warnings(request.scene))
         std::cerr << warning << "\n";
 
     CompareResult result;
@@ -160,6 +160,7 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
             glm::dvec4(footprints.pixel(x, y)[0], footprints.pixel(x, y)[1], footprints.pixel(x, y)[2], footprints.pixel(x, y)[3]);
         input.camera = camera;
         input.light = light;
+        input.light_radius = request.scene.light.radius;
         return input;
     };
     std::atomic<int> next_row{0};

@@ -40,7 +40,7 @@ image::FloatImage render_offscreen(const RenderRequest& request) {
         const auto session = open_effect_session(request.effect);
         if (!request.effect.save_preset.empty())
             effect::save_preset(request.effect.save_preset, session->effect(), session->technique(), session->values());
-        if (const std::string warning = session->unused_environment_warning(request.scene.environment); !warning.empty())
+        for (const std::string& warning : session->scene_warnings(request.scene))
             std::cerr << warning << "\n";
         session->render(request.scene, target);
         if (!request.scene.environment.source.empty()) draw_environment(session->environment(request.scene.environment));

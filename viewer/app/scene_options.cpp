@@ -26,6 +26,11 @@ void add_scene_options(CLI::App& command, SceneOptions& o) {
     command.add_option("--fov", o.fov, "Vertical field of view in degrees")->check(finite_range(1.0, 179.0));
     command.add_option("--light-position", o.light_position, "Light position X,Y,Z")->capture_default_str();
     command.add_option("--light-rotate", o.light_rotate, "Light rotation about the origin X,Y,Z in degrees");
+    auto* radius = command.add_option("--light-radius", o.light_radius, "Light as a sphere of this radius (world units; 0: a point)")
+                       ->check(finite_range(0.0, 1e3));
+    command.add_option("--light-angle", o.light_angle, "Light as a sphere of this angular radius seen from the origin, degrees")
+        ->check(finite_range(0.0, 60.0))
+        ->excludes(radius);
     command.add_option("--object-position", o.object_position, "Object position X,Y,Z");
     command.add_option("--object-rotate", o.object_rotate, "Object rotation X,Y,Z in degrees");
     command.add_option("--object-scale", o.object_scale, "Object scale X,Y,Z");
@@ -72,6 +77,10 @@ RenderRequest to_render_request(const SceneOptions& o) {
     scene.camera.fov_y_degrees = o.fov;
     scene.light.pose.position = parse_vec3("--light-position", o.light_position);
     scene.light.pose.rotation = math::rotation_from_euler_degrees(parse_vec3("--light-rotate", o.light_rotate));
+    if (o.light_angle) scene.light.radius = glm::length(scene.light.pose.position) * std::sin(glm::radians(*o.light_angle));
+    else scene.light.radius = o.light_radius.value_or(preset.light_radius.value_or(0.0f));
+    if (o.light_angle && *o.light_angle > 0 && glm::length(scene.light.pose.position) == 0.0f)
+        throw UsageError("--light-angle: the light sits at the origin; give --light-radius instead");
     scene::SceneObject& object = scene.objects.front();
     object.mesh = o.mesh;
     object.pose.position = parse_vec3("--object-position", o.object_position);

@@ -32,7 +32,7 @@ struct SceneOptions {
     std::string background = "0,0,0,0";
     // Unset: the preset's "scene" settings (effect/preset.hpp), else none / 0 / 1 / none.
     std::optional<std::string> environment, tone_map;
-    std::optional<float> environment_rotate, environment_intensity, exposure;
+    std::optional<float> environment_rotate, environment_intensity, exposure, light_radius, light_angle;
     std::optional<int> samples_given;
     bool gl_debug = false;
     EffectOptions effect;

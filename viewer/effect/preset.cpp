@@ -125,6 +125,8 @@ PresetScene load_preset_scene(const std::string& path, const ResourceLimits& lim
             scene.environment_intensity = static_cast<float>(number(0, 1e6, "a number 0 to 1e6"));
         } else if (key == "exposure") {
             scene.exposure = static_cast<float>(number(-30, 30, "a number of EV stops, -30 to 30"));
+        } else if (key == "light_radius") {
+            scene.light_radius = static_cast<float>(number(0, 1e3, "a radius in world units, 0 to 1000"));
         } else if (key == "tone_map") {
             if (!value.is_string()) throw bad("a string");
             scene.tone_map = value.get<std::string>();
@@ -134,7 +136,7 @@ PresetScene load_preset_scene(const std::string& path, const ResourceLimits& lim
             scene.samples = static_cast<int>(samples);
         } else {
             throw Error(where + "unknown scene setting \"" + excerpt(key) +
-                        "\" (environment, environment_rotate, environment_intensity, exposure, tone_map, samples)");
+                        "\" (environment, environment_rotate, environment_intensity, exposure, tone_map, samples, light_radius)");
         }
     }
     return scene;

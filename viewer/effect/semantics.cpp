@@ -12,7 +12,7 @@ const std::vector<std::string> kMatrixBases = {"WORLDVIEWPROJECTION", "VIEWPROJE
                                                "PROJECTION", "WORLD", "VIEW"};
 const std::vector<std::string> kOthers = {"CAMERAPOSITION", "LIGHTPOSITION", "LIGHTDIRECTION", "VIEWPORTPIXELSIZE",
                                           "TIME", "FRAME", "ENVIRONMENTROTATION", "ENVIRONMENTINTENSITY",
-                                          "VIEWLIGHTPOSITION"};
+                                          "VIEWLIGHTPOSITION", "LIGHTRADIUS"};
 
 std::optional<glm::mat4> matrix_for(const std::string& semantic, const FrameContext& f) {
     for (const auto& base : kMatrixBases) {
@@ -51,6 +51,7 @@ std::vector<float> semantic_value(const std::string& semantic, const FrameContex
     }
     if (semantic == "CAMERAPOSITION") return {f.camera_position.x, f.camera_position.y, f.camera_position.z, 1.0f};
     if (semantic == "LIGHTPOSITION") return {f.light_position.x, f.light_position.y, f.light_position.z, 1.0f};
+    if (semantic == "LIGHTRADIUS") return {f.light_radius};
     if (semantic == "VIEWLIGHTPOSITION") {  // Cg's glstate.light[0].position: OpenGL keeps it in eye space
         const glm::vec4 p = f.view * glm::vec4(f.light_position, 1.0f);
         return {p.x, p.y, p.z, p.w};

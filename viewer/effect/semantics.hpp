@@ -14,6 +14,7 @@ struct FrameContext {
     glm::mat4 world{1.0f}, view{1.0f}, projection{1.0f};
     glm::vec3 camera_position{0.0f};
     glm::vec3 light_position{0.0f};
+    float light_radius = 0.0f;  // 0: a point light
     glm::vec2 viewport_size{1.0f};
     glm::mat3 environment_rotation{1.0f};  // world -> environment directions
     float environment_intensity = 0.0f;    // 0 without an environment

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "optics/grating.hpp"
+#include "optics/grating_orders.hpp"
 #include "reference/spectral_integration.hpp"
 
 namespace fxview::reference {
@@ -77,6 +78,49 @@ Sample grating_sample(const Disc& d, const ShadingInput& in, const ReferenceCont
     return s;
 }
 
+// The energy-true orders (optics/grating_orders.hpp) in double: every propagating order's efficiency
+// times the sphere light's radiance from the direction the grating equation picks (the GPU visits
+// only the orders near the light). The shader draws no order past 32 (d <= 5000 nm has at most 28 at
+// 360 nm); so neither does this. `offset` moves the view's component across the tracks and the
+// chords to the light's centre by float-sized amounts, for the slack.
+constexpr int kMaxOrder = 32;
+
+double orders_radiance(const Disc& d, const ShadingInput& in, const ReferenceContext& c, int nm, double offset) {
+    optics::GratingOrderModel model;
+    model.spacing_nm = std::max(c.number("TrackSpacing"), 1.0);
+    model.zero_order = c.number("ZeroOrder");
+    model.pit_fraction = c.number("PitFraction");
+    model.reflectance = c.number("Reflectance");
+    const glm::dvec3 view(glm::dot(d.v, d.across) + offset, glm::dot(d.v, d.along), glm::dot(d.v, d.n));
+    if (view.z <= 0) return 0.0;
+    optics::OrderRange range = optics::propagating_orders(view, nm, model.spacing_nm);
+    range.first = std::max(range.first, -kMaxOrder);
+    range.last = std::min(range.last, kMaxOrder);
+    const std::vector<double> efficiencies = optics::order_efficiencies(model, range);
+    const double edge = optics::light_edge_chord(std::max(in.light_radius, 0.0) / glm::length(in.light - in.position));
+    const double ratio = nm / model.spacing_nm, tracks = std::max(1.0, c.number("Tracks"));
+    double radiance = 0;
+    for (int m = range.first; m <= range.last; ++m) {
+        const auto l = optics::order_incidence(view, m, nm, model.spacing_nm);
+        if (!l) continue;
+        const glm::dvec3 incidence = l->x * d.across + l->y * d.along + l->z * d.n;
+        const double chord = glm::length(incidence - d.l) + offset;
+        const double width = ratio / tracks + in.footprint.x + std::abs(m) * ratio * in.footprint.y;
+        radiance += efficiencies[static_cast<size_t>(m - range.first)] * optics::sphere_light_radiance(chord, edge, width);
+    }
+    return radiance;
+}
+
+// The float error of the directions (normalisations, dot products, the chord's length: a few 1e-7;
+// 2e-6 is generous) can move an order's image edge or an order over the edge of propagation.
+Sample orders_sample(const Disc& d, const ShadingInput& in, const ReferenceContext& c, int nm, bool want_intensity) {
+    const double value = orders_radiance(d, in, c, nm, 0.0);
+    if (want_intensity) return {value, 0.0};
+    double uncertainty = 0;
+    for (const double offset : {-2e-6, 2e-6}) uncertainty = std::max(uncertainty, std::abs(orders_radiance(d, in, c, nm, offset) - value));
+    return {value, uncertainty};
+}
+
 // The surroundings mirrored in the disc, as the GPU reads its cube map.
 CubeSample environment(const ShadingInput& in, const ReferenceContext& c) {
     const glm::dvec3 v = glm::normalize(in.camera - in.position), n = glm::normalize(in.normal);
@@ -123,6 +167,7 @@ std::map<std::string, Reference> cd_references() {
     std::map<std::string, Reference> all;
     all.emplace("Thesis", make(thesis_sample));
     all.emplace("Grating", make(grating_sample));
+    all.emplace("Orders", make(orders_sample));
     return all;
 }
 

@@ -54,6 +54,7 @@ void EffectRenderer::render(const scene::Scene& scene, const effect::CompiledTec
         math::perspective_matrix(scene.camera.fov_y_degrees, aspect, scene.camera.near_plane, scene.camera.far_plane);
     frame.camera_position = math::camera_world_position(scene.camera.pose);
     frame.light_position = scene.light.world_position();
+    frame.light_radius = scene.light.radius;
     frame.environment_rotation = scene.environment.world_to_environment();
     frame.environment_intensity = scene.environment.source.empty() ? 0.0f : scene.environment.intensity;
     frame.time = timing.time;

@@ -67,6 +67,7 @@ std::unique_ptr<EffectSession::Loaded> EffectSession::prepare(std::unique_ptr<ef
                 t.reads.insert(uniform.parameter->name);
                 const std::string semantic = to_lower(uniform.parameter->semantic);
                 t.animated = t.animated || semantic == "time" || semantic == "frame";
+                t.sized_light = t.sized_light || semantic == "lightradius";
             }
         }
     }
@@ -140,6 +141,19 @@ std::string EffectSession::unused_environment_warning(const scene::Environment& 
     if (environment.source.empty() || loaded_->resources->uses_environment()) return "";
     return path_ + ": warning: this effect's techniques are lit by the point light only; the environment '" + environment.source +
            "' fills the background but does not light them";
+}
+
+std::string EffectSession::unused_light_radius_warning(const scene::Light& light) const {
+    if (light.radius <= 0.0f || traits(technique_).sized_light) return "";
+    return path_ + ": warning: technique '" + technique_ + "' treats the light as a point; its radius " + std::to_string(light.radius) +
+           " changes nothing here (cd.fx's Orders shows a light's size)";
+}
+
+std::vector<std::string> EffectSession::scene_warnings(const scene::Scene& scene) const {
+    std::vector<std::string> warnings;
+    for (std::string warning : {unused_environment_warning(scene.environment), unused_light_radius_warning(scene.light)})
+        if (!warning.empty()) warnings.push_back(std::move(warning));
+    return warnings;
 }
 
 void EffectSession::render(const scene::Scene& scene, const gl::RenderTarget& target, FrameTiming timing, bool clear_target) {

@@ -50,12 +50,16 @@ public:
     // Empty when the effect's shaders read the environment (or none is set); otherwise a warning that
     // it only fills the background: said, never silently ignored.
     std::string unused_environment_warning(const scene::Environment& environment) const;
+    // The same for a sphere light's radius that the selected technique does not read (LIGHTRADIUS).
+    std::string unused_light_radius_warning(const scene::Light& light) const;
+    std::vector<std::string> scene_warnings(const scene::Scene& scene) const;  // both of the above that apply
     // What a technique's compiled passes say about it, found once when it is compiled (the viewer
     // asks every frame). Unknown techniques: nothing read, not animated, no textures of their own.
     struct TechniqueTraits {
         std::set<std::string> reads;       // the parameters its programs read (active uniforms the compiler kept)
         bool animated = false;             // a TIME or FRAME semantic is read: the picture changes with time alone
         bool renders_to_textures = false;  // later passes may read neighbouring pixels: no strip-by-strip drawing
+        bool sized_light = false;          // the LIGHTRADIUS semantic is read: the light's size shows
     };
     const TechniqueTraits& traits(const std::string& technique) const;
     const std::set<std::string>& parameters_read(const std::string& technique) const { return traits(technique).reads; }

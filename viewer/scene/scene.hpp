@@ -14,11 +14,16 @@ struct Camera {
     float far_plane = 100.0f;
 };
 
-// A point light; `pose.rotation` turns its position about the origin (the light is orbited).
+// A light: a point, or a sphere of `radius` (a lamp, a ceiling panel or a window seen as a disc of
+// angular radius asin(radius / distance)); `pose.rotation` turns its position about the origin (the
+// light is orbited). A sphere light gives the irradiance of the point light at its centre, so its
+// radius changes reflections (highlights, diffraction orders), not the diffuse shading; effects read
+// it through the LIGHTRADIUS semantic.
 struct Light {
     math::Pose pose{glm::vec3(2.0f, 2.0f, 3.0f), glm::quat(1.0f, 0.0f, 0.0f, 0.0f)};
     glm::vec3 color{1.0f};
     float intensity = 1.0f;
+    float radius = 0.0f;  // world units; 0: a point light
 
     glm::vec3 world_position() const { return glm::mat3_cast(pose.rotation) * pose.position; }
 };

@@ -81,7 +81,7 @@ void ViewerScene::add_to(StateHash& h) const {
     h.add(c.pose.rotation.w).add(c.pose.rotation.x).add(c.pose.rotation.y).add(c.pose.rotation.z).add(c.pose.pan.x).add(c.pose.pan.y);
     h.add(c.pose.distance).add(c.fov_y_degrees).add(c.near_plane).add(c.far_plane);
     const glm::vec3 light = scene.light.world_position();
-    h.add(light.x).add(light.y).add(light.z).add(scene.light.color.r).add(scene.light.color.g).add(scene.light.color.b).add(scene.light.intensity);
+    h.add(light.x).add(light.y).add(light.z).add(scene.light.color.r).add(scene.light.color.g).add(scene.light.color.b).add(scene.light.intensity).add(scene.light.radius);
     h.add(scene.background.r).add(scene.background.g).add(scene.background.b).add(scene.background.a);
     h.add(scene.environment.source).add(scene.environment.rotation_degrees).add(scene.environment.intensity);
     for (const auto& o : objects) {
@@ -92,7 +92,8 @@ void ViewerScene::add_to(StateHash& h) const {
     }
 }
 
-void draw_scene_panel(ViewerScene& view, const std::string& technique, bool has_effect, std::string& status) {
+void draw_scene_panel(ViewerScene& view, const std::string& technique, bool has_effect, const std::string& light_warning,
+                      std::string& status) {
     ImGui::TextWrapped("Turn with the left mouse button, move with the right, zoom with the wheel.");
     const char* targets[] = {"Camera", "Light", "Object"};
     int selected = static_cast<int>(view.selected);
@@ -104,6 +105,16 @@ void draw_scene_panel(ViewerScene& view, const std::string& technique, bool has_
     glm::vec3 light = view.scene.light.world_position();
     if (ImGui::DragFloat3("light position", &light.x, 0.05f))
         view.scene.light.pose.position = glm::inverse(glm::mat3_cast(view.scene.light.pose.rotation)) * light;
+    ImGui::DragFloat("light radius", &view.scene.light.radius, 0.01f, 0.0f, 1e3f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    if (ImGui::IsItemHovered()) {
+        const float distance = glm::length(light);
+        const float angle = distance > view.scene.light.radius ? glm::degrees(std::asin(view.scene.light.radius / distance)) : 90.0f;
+        ImGui::SetTooltip("0: a point light. Larger: a lamp, a ceiling panel, a window (%.1f degrees angular radius seen from the origin). "
+                          "Reflections and diffraction orders show its size; techniques that treat it as a point say so",
+                          angle);
+    }
+    if (!light_warning.empty())
+        ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "This technique treats the light as a point:\nits radius changes nothing here.");
     ImGui::Checkbox("show the light in the view", &view.show_light);
     ImGui::ColorEdit4("background", &view.scene.background.r, ImGuiColorEditFlags_Float);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Linear RGBA the picture is cleared to; where alpha is 0 the view shows its grey backdrop");

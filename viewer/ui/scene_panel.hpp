@@ -47,8 +47,10 @@ struct ViewerScene {
     void add_to(StateHash& hash) const;                         // everything a picture of it depends on
 };
 
-// The Scene tab. Added objects show `technique` (the effect's current one; empty without an effect).
-void draw_scene_panel(ViewerScene& view, const std::string& technique, bool has_effect, std::string& status);
+// The Scene tab. Added objects show `technique` (the effect's current one; empty without an effect);
+// `light_warning` (EffectSession::unused_light_radius_warning) is noted under the light's radius.
+void draw_scene_panel(ViewerScene& view, const std::string& technique, bool has_effect, const std::string& light_warning,
+                      std::string& status);
 
 // The light as a small sun where it projects into the render view; off screen (or behind the camera,
 // or in its plane) a sun with an arrow on the view's edge, pointing to it.

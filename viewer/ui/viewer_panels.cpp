@@ -142,7 +142,8 @@ void Viewer::draw_ui(int window_width, int window_height) {
             ImGui::EndTabItem();
         }
         if (ImGui::BeginTabItem("Scene", nullptr, tab_flags("Scene"))) {
-            draw_scene_panel(view_, session() ? session()->technique() : "", session() != nullptr, status_);
+            draw_scene_panel(view_, session() ? session()->technique() : "", session() != nullptr,
+                             session() ? session()->unused_light_radius_warning(view_.scene.light) : "", status_);
             environment_panel_.draw(view_.scene.environment, session());
             ImGui::EndTabItem();
         }
