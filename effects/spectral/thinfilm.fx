@@ -429,11 +429,10 @@ void sensitivity_at(int row, vec3 centre, float path, out vec3 re, out vec3 im) 
     im = envelope_re * s + envelope_im * c;
 }
 
-// The largest |F| (any channel) from this path difference on: row + 2 holds it from sample 1 on; from
-// sample 0 on it is F(0) itself.
+// The largest |F| (any channel) from this path difference on: row + 2 holds it from sample 1 on (the
+// last texel: the largest sampled past the table); from sample 0 on it is F(0) itself.
 float fourier_tail_bound(int row, float path) {
-    int i = int(path / kFourierStep);
-    if (i >= kFourierSamples - 1) return 0.0;
+    int i = int(min(path / kFourierStep, float(kFourierSamples - 1)));
     vec3 tail = i == 0 ? texelFetch(FilmFourier, ivec2(0, row), 0).rgb : texelFetch(FilmFourier, ivec2(i, row + 2), 0).rgb;
     return max(tail.x, max(tail.y, tail.z));
 }
@@ -493,7 +492,14 @@ bool fourier_film_xyz(Film f, vec2 n2, out vec3 xyz) {
 
     xyz = c0 * white;
     for (int m = 1; m <= SeriesOrder; ++m) {
-        if (2.0 * (length(c_s) * decay_s + length(c_p) * decay_p) * fourier_tail_bound(row, float(m) * path) / brightest < kSeriesTermLimit) break;
+        float rest = 2.0 * (length(c_s) * decay_s + length(c_p) * decay_p) * fourier_tail_bound(row, float(m) * path) / brightest;
+        if (rest < kSeriesTermLimit) break;
+        // The table has no F past its end (a line spectrum's comb returns there): drop the rest where
+        // it adds little, else the exact sum.
+        if (float(m) * path >= kFourierStep * float(kFourierSamples - 1)) {
+            if (rest > kSeriesTailLimit) return false;
+            break;
+        }
         vec3 re, im;
         sensitivity_at(row, centre, float(m) * path, re, im);
         vec2 c = c_s + c_p;

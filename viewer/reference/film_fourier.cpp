@@ -51,8 +51,15 @@ std::optional<spectral::Vec3> film_xyz_fourier_table(const spectral::PackedTextu
     if (!(left_from(order + 1) <= kSeriesTailLimit)) return std::nullopt;
     spectral::Vec3 xyz{};
     for (size_t i = 0; i < 3; ++i) xyz[i] = (technique.weight_s * s.c[0].real() + technique.weight_p * p.c[0].real()) * white[i].real();
+    const double table_end = spectral::kFourierStepNm * (spectral::kFourierSamples - 1);
     for (int m = 1; m <= order; ++m) {
-        if (left_from(m) < kSeriesTermLimit) break;
+        const double left = left_from(m);
+        if (left < kSeriesTermLimit) break;
+        // The table has no F past its end: drop the rest where it adds little, else the exact sum.
+        if (m * path >= table_end) {
+            if (left > kSeriesTailLimit) return std::nullopt;
+            break;
+        }
         const auto [c_s, c_p] = coefficient(m);
         const spectral::ComplexXyz transform = spectral::fourier_lookup(table, observer_row, light, m * path);
         for (size_t i = 0; i < 3; ++i) xyz[i] += 2.0 * ((c_s + c_p) * transform[i]).real();

@@ -72,9 +72,44 @@ void fill_table(texture::Level& level, int first_gl_row, const Observer& observe
         store(level, k, height - 2 - first_gl_row, envelope_im);
     }
     store(level, 0, height - 3 - first_gl_row, centre);
-    // Row 3t + 2, texel k >= 1: the largest |F| from sample k on (a running maximum from the end),
-    // rounded up to float so that it stays a bound.
-    Vec3 tail{};
+    // Past the table: a bound on |F| (= |G|, the envelope) up to kFourierBeyondNm, continuing the
+    // phasors from where the table ends with samples every h = 2 kFourierStepNm. Between samples, with
+    // G(D) = Σ w e^{i2πD(1/λ − ν)}: |G(D)| <= |G(s)| + |G'(s)| h/2 + max|G''| h²/8, where
+    // G' = Σ w i2π(1/λ − ν) e^{...} is summed alongside and |G''| <= (2πB)² F(0), B = max |1/λ − ν|.
+    Vec3 tail{}, spread{}, white{};
+    for (const Sample& s : samples)
+        for (size_t c = 0; c < 3; ++c) white[c] += s.w[c];
+    for (int nm = kCmfFirstNm; nm <= kCmfLastNm; ++nm)
+        for (size_t c = 0; c < 3; ++c) spread[c] = std::max(spread[c], std::abs(1.0 / nm - centre[c]));
+    constexpr double h = 2 * kFourierStepNm;
+    for (Sample& s : samples) {  // one step of h: two of the table's
+        const double r = s.step_re * s.step_re - s.step_im * s.step_im;
+        s.step_im = 2 * s.step_re * s.step_im;
+        s.step_re = r;
+    }
+    const int beyond = static_cast<int>((kFourierBeyondNm - kFourierStepNm * kFourierSamples) / h);
+    for (int k = 0; k <= beyond; ++k) {
+        double re[3] = {0, 0, 0}, im[3] = {0, 0, 0}, slope_re[3] = {0, 0, 0}, slope_im[3] = {0, 0, 0};
+        int index = 0;
+        for (Sample& s : samples) {
+            const double frequency = 1.0 / (kCmfFirstNm + index++);
+            for (int c = 0; c < 3; ++c) {
+                re[c] += s.w[c] * s.re;
+                im[c] += s.w[c] * s.im;
+                slope_re[c] += s.w[c] * (frequency - centre[static_cast<size_t>(c)]) * s.re;
+                slope_im[c] += s.w[c] * (frequency - centre[static_cast<size_t>(c)]) * s.im;
+            }
+            const double next_re = s.re * s.step_re - s.im * s.step_im;
+            s.im = s.re * s.step_im + s.im * s.step_re;
+            s.re = next_re;
+        }
+        for (size_t c = 0; c < 3; ++c) {
+            const double curvature = std::pow(kTwoPi * spread[c], 2) * white[c];
+            tail[c] = std::max(tail[c], std::hypot(re[c], im[c]) + kTwoPi * std::hypot(slope_re[c], slope_im[c]) * h / 2 + curvature * h * h / 8);
+        }
+    }
+    // Row 3t + 2, texel k >= 1: the largest |F| from sample k on (a running maximum from the end, the
+    // part past the table included), rounded up to float so that it stays a bound.
     for (int k = kFourierSamples - 1; k >= 1; --k) {
         for (size_t c = 0; c < 3; ++c) tail[c] = std::max(tail[c], magnitude[static_cast<size_t>(k)][c]);
         Vec3 stored{};
@@ -123,10 +158,11 @@ int table_row(const PackedTexture& table, int observer_row, int spectrum) {
 
 double fourier_tail_bound(const PackedTexture& table, int observer_row, int spectrum, double path_difference_nm) {
     const double x = path_difference_nm / kFourierStepNm;
-    if (x >= kFourierSamples - 1) return 0.0;
     const int row = table_row(table, observer_row, spectrum);
-    // Texel 0 of that row holds the centres; from sample 0 on the largest |F| is F(0) itself.
-    const Vec3 tail = static_cast<int>(x) == 0 ? read(table, 0, row) : read(table, static_cast<int>(x), row + 2);
+    // Texel 0 of that row holds the centres; from sample 0 on the largest |F| is F(0) itself; past
+    // the table, the last texel: the largest |F| sampled beyond it.
+    const int i = static_cast<int>(std::min(x, static_cast<double>(kFourierSamples - 1)));
+    const Vec3 tail = i == 0 ? read(table, 0, row) : read(table, i, row + 2);
     return std::max({tail[0], tail[1], tail[2]});
 }
 

@@ -11,11 +11,13 @@
 // Layout: RGBA32F, kFourierSamples texels wide; table t = observer · spectra + spectrum uses GL rows
 // 3t (Re G, xyz), 3t + 1 (Im G) and 3t + 2 (texel 0: ν_c per channel; texel k >= 1: the largest
 // stored |F| per channel from sample k on, which bounds what the series' remaining terms can add
-// far more tightly than F(0) for all but the thinnest films). Beyond the last sample (path
-// differences over 32.8 µm) F is taken as 0, the incoherent limit: for daylight and other smooth
-// spectra |F| is below 0.2 % of F(0) from 20 µm on, but a fluorescent line spectrum keeps ~20 %, so
-// under such a light the second and higher terms of films with n d over ~8 µm lose their coherent
-// part (single films reach n d = 12 µm at the sliders' maxima).
+// far more tightly than F(0) for all but the thinnest films; the last texel holds a bound on |F|
+// past the table up to kFourierBeyondNm, from samples of F and F' with the curvature's limit in
+// between, and every texel's bound includes it; past kFourierBeyondNm it is assumed, not bounded). Beyond the last sample (path differences over 32.8 µm) the table has no F: for
+// daylight and other smooth spectra |F| is below 0.2 % of F(0) there, but a fluorescent line
+// spectrum keeps up to 64 % (F11 near 62 µm, the return of its 5 nm comb), so the techniques drop
+// the terms past the table only where the stored bound says they add less than kSeriesTailLimit,
+// and take the exact sum otherwise (viewer/reference/film_fourier.hpp).
 #pragma once
 #include <vector>
 
@@ -28,14 +30,15 @@ namespace fxview::spectral {
 constexpr int kFourierSamples = 4096;
 constexpr double kFourierStepNm = 8.0;
 constexpr int kFourierRowsPerTable = 3;
+constexpr double kFourierBeyondNm = 65536.0;  // twice the table's reach: F11's comb returns near 62 µm
 
 PackedTexture fourier_table(const std::vector<NamedSpectrum>& spectra, const Observer& cie1931, const Observer& cie1964);
 
 // F(D) for one observer row (0 = CIE 1931, 1 = CIE 1964) and spectrum, interpolated from the stored
 // (float) table in double, as the shader does: what the CPU reference uses.
 ComplexXyz fourier_lookup(const PackedTexture& table, int observer_row, int spectrum, double path_difference_nm);
-// The largest |F_c| over all channels that fourier_lookup can return at this path difference or any
-// longer one (0 beyond the table).
+// The largest |F_c| over all channels at this path difference or any longer one: fourier_lookup's
+// values within the table, the sampled maximum past it (which fourier_lookup returns as 0).
 double fourier_tail_bound(const PackedTexture& table, int observer_row, int spectrum, double path_difference_nm);
 
 }  // namespace fxview::spectral
