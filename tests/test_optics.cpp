@@ -147,6 +147,13 @@ TEST_CASE("the thesis' approximate models evaluate their documented formulas") {
     CHECK(thesis::durikovic(1.0, 1.33, 1.5, 0.0, 500.0, 1.0) == doctest::Approx(0.006766721994).epsilon(1e-9));
     CHECK(thesis::alternative(1.0, 1.33, 1.5, 0.0, 500.0, 1.0) == doctest::Approx(0.01991769948).epsilon(1e-9));
     CHECK(thesis::fabry_perot(1.0, 1.33, 100.0, 500.0, 1.0) == doctest::Approx(0.4321908952).epsilon(1e-9));
+    // Eq. 65 truncates the beams and would reflect up to 1.18 of the light at n 2.5 / 3.0 / 1.0 (550 nm,
+    // total reflection at the substrate, 87°, 82.5 nm: worked out in python3): clamped, it reaches
+    // exactly 1 and never more.
+    double most = 0;
+    for (double c = 0.01; c <= 1.0; c += 0.01)
+        for (double d = 0; d <= 200; d += 0.5) most = std::max(most, thesis::alternative(2.5, 3.0, 1.0, d, 550.0, c));
+    CHECK(most == 1.0);
 
     // What the approximations cost: with no film at all the exact answer is the bare 1.0/1.5
     // interface (R = 0.04); Code 15 gives 0.0068 and eq. 65 0.0199 (DOMAIN.md §3).

@@ -163,7 +163,8 @@ GLSLShader FresnelAlternativeFS {
             float delta = path / float(nm);
             vec2 sine = trt * sin(delta) + trrrt * sin(2.0 * delta);
             vec2 cosine = r01 * cos(delta) + trrrt * cos(2.0 * delta);
-            add_sample(xyz, ybar_sum, nm, cos1 > 0.0 ? 0.5 * (dot(sine, sine) + dot(cosine, cosine)) : 1.0);
+            // Clamped to 1: the truncated sum can exceed it (docs/thin-films.md).
+            add_sample(xyz, ybar_sum, nm, cos1 > 0.0 ? min(0.5 * (dot(sine, sine) + dot(cosine, cosine)), 1.0) : 1.0);
         }
         color = film_colour(xyz, ybar_sum);
         fx_capture();

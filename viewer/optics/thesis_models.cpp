@@ -65,7 +65,8 @@ double alternative(double n0, double n1, double n2, double thickness_nm, double 
         const double cosine = r01 * std::cos(delta) + trrrt * std::cos(2.0 * delta);
         sum += sine * sine + cosine * cosine;
     }
-    return 0.5 * sum;
+    // The truncated sum can exceed 1 (1.18 at n 2.5 / 3.0 / 1.0, 87°): never more light than arrives.
+    return std::min(0.5 * sum, 1.0);
 }
 
 double fabry_perot(double n0, double n1, double thickness_nm, double wavelength_nm, double cos0) {

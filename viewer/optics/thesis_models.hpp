@@ -22,7 +22,9 @@ PathDifference path_difference(double n0, double n1, double thickness_nm, double
 double durikovic(double n0, double n1, double n2, double thickness_nm, double wavelength_nm, double cos0);
 
 // Eq. 64/65 ("FresnelAlternative"): t = |1 − r|, trt = t01 r12 t10, trrrt = t01 r12 r10 r12 t10,
-// R = (trt sin Δ + trrrt sin 2Δ)² + (r01 cos Δ + trrrt cos 2Δ)², averaged over both polarisations.
+// R = (trt sin Δ + trrrt sin 2Δ)² + (r01 cos Δ + trrrt cos 2Δ)², averaged over both polarisations,
+// clamped to 1: the sum is truncated after two internal reflections and can exceed 1 (1.18 at
+// n0 2.5, n1 3.0, n2 1.0; even Stokes' t01 t10 = 1 − r01² in the same three beams reaches 1.24).
 double alternative(double n0, double n1, double n2, double thickness_nm, double wavelength_nm, double cos0);
 
 // Eq. 66 (Fabry-Pérot): F = 4R/(1 − R)², T = 1/(1 + F sin²(Δ/2)), Δ = 2π/λ · 2 n1 d cosθ1; reflected 1 − T
