@@ -17,6 +17,7 @@
 #include "lighting/cube_map.hpp"
 #include "lighting/environment_sources.hpp"
 #include "lighting/image_based_lighting.hpp"
+#include "spectral/colorimetry.hpp"
 #include "texture/texture_file.hpp"
 #include "test_support.hpp"
 
@@ -126,7 +127,7 @@ TEST_CASE("the sky's ground is a grey ground of albedo 0.2 lit by that sky: dark
 
 TEST_CASE("SH irradiance of a sky brightening towards the zenith matches the analytic integral") {
     // L = max(y, 0): E(up)/π = ∫ cos² dω / π = 2/3, E(down) = 0.
-    const lighting::Environment sky{lighting::tabulate(32, 2, [](const glm::dvec3& d) { return glm::vec3(static_cast<float>(std::max(d.y, 0.0))); }), {}};
+    const lighting::Environment sky{lighting::tabulate(32, 2, [](const glm::dvec3& d) { return glm::vec3(static_cast<float>(std::max(d.y, 0.0))); }), {}, std::nullopt};
     const lighting::PrefilteredEnvironment p = lighting::prefilter(sky, 1);
     // Order-2 SH irradiance is not exact for a clamped lighting; Ramamoorthi & Hanrahan (2001) bound its
     // error at a few percent of the mean: allow 0.03 absolute against radiance of order 1.
@@ -248,11 +249,16 @@ TEST_CASE("bad environments: unknown names and files exit non-zero naming them")
 TEST_CASE("an environment that an effect's shaders do not read is said, never silently ignored") {
     const std::string effects = std::string(FXVIEW_SOURCE_EFFECTS_DIR);
     const std::string out = " --environment sky --size 16x16 --out " + temp_path("unused-environment.png");
-    for (const std::string spectral : {"/spectral/cd.fx", "/spectral/thinfilm.fx", "/spectral/wavelength.fx"}) {
+    for (const std::string spectral : {"/spectral/cd.fx", "/spectral/wavelength.fx"}) {
         const Result r = run("render " + effects + spectral + out);
         CHECK(r.exit_code == 0);
         CHECK(r.err.find("lit by the point light only; the environment 'sky'") != std::string::npos);
     }
+    // The thin films mirror the sky's spectral form; an environment without one (an RGB studio) is said.
+    CHECK(run("render " + effects + "/spectral/thinfilm.fx" + out).err.find("warning") == std::string::npos);
+    const Result studio = run("render " + effects + "/spectral/thinfilm.fx --environment studio --size 16x16 --out " + temp_path("studio-film.png"));
+    CHECK(studio.exit_code == 0);
+    CHECK(studio.err.find("the environment 'studio' has no spectral form") != std::string::npos);
     // An effect that is lit by it says nothing of the kind; without --environment neither does a spectral one.
     CHECK(run("render " + effects + "/brdf/analytic.fx" + out).err.find("point light only") == std::string::npos);
     CHECK(run("render " + effects + "/spectral/cd.fx --size 16x16 --out " + temp_path("no-environment.png")).err.find("point light only") == std::string::npos);
@@ -499,5 +505,36 @@ TEST_CASE("an image with two small suns: both become discs, and the GPU shades t
                              " --size 32x32 --set Metallic=1 --set Roughness=0.3 --set GGXAlpha=0.09");
         CHECK(r.exit_code == 0);
         CHECK(r.out.find("pass") != std::string::npos);
+    }
+}
+
+TEST_CASE("the built-in sky's spectral form is its RGB radiance: Σ w_k S_k through the CIE 1931 CMFs gives the cube's colour") {
+    // Independent of the sky's construction: colord's CMFs integrate the spectra at 1 nm, and the
+    // result must be the RGB the background and the RGB techniques see. 1e-3 relative: the cube's
+    // float texels and the clipping of daylight's RGB at 0 (12000 K and 5500 K lie inside sRGB).
+    const spectral::Observer observer = spectral::load_observer("1931");
+    for (const char* source : {"sky", "sky:5,4500"}) {
+        const lighting::Environment sky = lighting::make_environment(source, 32);
+        REQUIRE(sky.spectral.has_value());
+        CHECK(!lighting::make_environment("studio", 8).spectral.has_value());
+        double ybar = 0;
+        for (int nm = 360; nm <= 830; ++nm) ybar += observer.y.at(nm);
+        const lighting::FloatCube with_discs = sky.radiance_with_discs();  // the weights hold the sun drawn in
+        for (int face = 0; face < 6; ++face)
+            for (int y = 1; y < 32; y += 5)
+                for (int x = 2; x < 32; x += 7) {
+                    const glm::vec3 w = sky.spectral->weights.at(face, x, y), rgb = with_discs.at(face, x, y);
+                    spectral::Vec3 xyz{};
+                    for (int nm = 360; nm <= 830; ++nm) {
+                        const size_t i = static_cast<size_t>(nm - 360);
+                        const double l = w.x * sky.spectral->spectra[0][i] + w.y * sky.spectral->spectra[1][i] + w.z * sky.spectral->spectra[2][i];
+                        xyz[0] += l * observer.x.at(nm) / ybar;
+                        xyz[1] += l * observer.y.at(nm) / ybar;
+                        xyz[2] += l * observer.z.at(nm) / ybar;
+                    }
+                    const spectral::Vec3 expected = spectral::xyz_to_linear_srgb_unclipped(xyz);
+                    CAPTURE(source); CAPTURE(face); CAPTURE(x); CAPTURE(y);
+                    for (int c = 0; c < 3; ++c) CHECK(rgb[c] == doctest::Approx(expected[static_cast<size_t>(c)]).epsilon(1e-3).scale(1e-4));
+                }
     }
 }

@@ -8,13 +8,14 @@
 #include "standard.glsl"
 #include "spectral.glsl"
 #include "thin_film.glsl"
+#include "environment_spectral.glsl"
 
 uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
                             string UIHelp = "Index in spectra/library.txt (5 = D65)"; > = 5;
 uniform float Brightness < string UIName = "Brightness"; float UIMin = 0; float UIMax = 8; float UIStep = 0.1; string UIGroup = "Lighting";
                            string UIHelp = "Scales the reflected light: 1 is physical (a perfect mirror under illuminant E gives Y = 1)"; > = 2.0;
 uniform int Incidence < string UIName = "Angle of incidence from"; string UIWidget = "combo"; string UIItems = "view|light"; string UIGroup = "Lighting";
-                        string UIHelp = "view: light arriving from the mirror direction of the eye (a uniform sky); light: the angle to the point light"; > = 0;
+                        string UIHelp = "view: light arriving from the mirror direction of the eye (a uniform sky of the light spectrum; under --environment sky, the sky seen in that direction); light: the angle to the point light"; > = 0;
 
 uniform float OuterIndex < string UIName = "Outer medium n0"; float UIMin = 1; float UIMax = 2.5; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 1; > = 1.0;
 uniform float FilmIndex < string UIName = "Film n1"; float UIMin = 1; float UIMax = 3; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 2;
@@ -44,21 +45,33 @@ struct Film {
     float thickness;  // nm, at this fragment
 };
 
+// Under a spectral environment (the built-in sky) with Incidence = view, the film mirrors the sky:
+// the light at each wavelength is the sky's radiance from the mirror direction of the eye, whose
+// spectral weights film_at() finds once per fragment and keeps here.
+bool film_under_sky = false;
+vec3 film_sky_weights = vec3(0.0);
+
 Film film_at(vec3 position, vec3 normal, vec2 uv) {
     vec3 n = normalize(normal);
+    vec3 v = normalize(CameraPosition - position);
     Film f;
     f.cos_light = clamp(dot(n, normalize(LightPosition - position)), 0.0, 1.0);
-    f.cos_view = clamp(dot(n, normalize(CameraPosition - position)), 0.0, 1.0);
+    f.cos_view = clamp(dot(n, v), 0.0, 1.0);
     f.cos0 = Incidence == 1 ? f.cos_light : f.cos_view;
     vec2 centred = 2.0 * uv - 1.0;
     f.thickness = Thickness + Variation * max(1.0 - dot(centred, centred), 0.0);
+    film_under_sky = Incidence == 0 && spectral_environment();
+    if (film_under_sky) film_sky_weights = spectral_environment_weights(reflect(-v, n));
     return f;
 }
+
+// The light at `nm`: the light spectrum, or the sky seen in the mirror direction.
+float light_at(int nm) { return film_under_sky ? spectral_environment_radiance(film_sky_weights, nm) : spectrum_at(LightSpectrum, nm); }
 
 // One wavelength's reflected light, weighted by the CMFs; ybar_sum collects k's denominator.
 void add_sample(inout vec3 xyz, inout float ybar_sum, int nm, float reflectance) {
     vec3 cmf = cmf_at(nm);
-    xyz += spectrum_at(LightSpectrum, nm) * reflectance * cmf;
+    xyz += light_at(nm) * reflectance * cmf;
     ybar_sum += cmf.y;
 }
 
@@ -452,7 +465,7 @@ vec3 exact_film_xyz(Film f, vec2 n2) {
         vec2 s = hirayama_step(r01.s, r12.s, path / float(nm));
         vec2 p = hirayama_step(r01.p, r12.p, path / float(nm));
         vec3 cmf = texelFetch(CmfFloat, ivec2(nm - 360, Observer), 0).rgb;
-        xyz += spectrum_at(LightSpectrum, nm) * (weight.x * dot(s, s) + weight.y * dot(p, p)) * cmf;
+        xyz += light_at(nm) * (weight.x * dot(s, s) + weight.y * dot(p, p)) * cmf;
         ybar_sum += cmf.y;
     }
     return xyz / ybar_sum;
@@ -514,7 +527,8 @@ bool fourier_film_xyz(Film f, vec2 n2, out vec3 xyz) {
 // One call of the exact sum (a second inlined copy of its loop costs llvmpipe dearly).
 vec4 fourier_film_colour(Film f, vec2 n2) {
     vec3 xyz;
-    if (!fourier_film_xyz(f, n2, xyz)) xyz = exact_film_xyz(f, n2);
+    // Under the sky the light is no spectrum of the table: the exact sum.
+    if (film_under_sky || !fourier_film_xyz(f, n2, xyz)) xyz = exact_film_xyz(f, n2);
     return vec4(xyz_to_srgb(xyz * Brightness), 1.0);
 }
 

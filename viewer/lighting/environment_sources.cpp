@@ -43,6 +43,20 @@ glm::dvec3 daylight_rgb(double kelvin) {
     return glm::max(glm::dvec3(rgb[0], rgb[1], rgb[2]), glm::dvec3(0.0));
 }
 
+// CIE daylight at `kelvin` over 360-830 nm at 1 nm with luminance 1 as SpectralForm defines it.
+std::vector<double> daylight_spectrum(double kelvin) {
+    const spectral::Observer observer = spectral::load_observer("1931");
+    const spectral::Spectrum daylight = spectral::cie_daylight(kelvin);
+    double ybar = 0, luminance = 0;
+    for (int nm = SpectralForm::kFirstNm; nm <= SpectralForm::kLastNm; ++nm) {
+        ybar += observer.y.at(nm);
+        luminance += observer.y.at(nm) * daylight.at(nm);
+    }
+    std::vector<double> out;
+    for (int nm = SpectralForm::kFirstNm; nm <= SpectralForm::kLastNm; ++nm) out.push_back(daylight.at(nm) * ybar / luminance);
+    return out;
+}
+
 // CIE S 011 / ISO 15469 standard clear sky, type 12: relative luminance at zenith angle z, angle to the sun chi.
 double clear_sky(double z, double chi) {
     const double a = -1.0, b = -0.32, c = 10.0, d = -3.0, e = 0.45;
@@ -77,15 +91,23 @@ Environment make_sky(const Sky& sky, int size) {
     // A grey Lambertian ground of albedo 0.2 lit by this sky: radiance 0.2/π times the horizontal
     // irradiance of sun (sun_scale sin(elevation), in the sun's colour) and sky (0.2π, in the sky's):
     // 0.2 at the default elevation, 0.064 with the sun at 5°, dark once it has set.
-    const glm::dvec3 ground_radiance =
-        0.2 / kPi * (sun_scale * std::max(std::sin(el), 0.0) * sun_colour + sky_scale * sky_horizontal * sky_colour);
+    // The sky by its two spectra: the dome's weight (12000 K daylight) and the sun's (CCT), the ground
+    // lit by both; its RGB is w_dome sky_colour + w_sun sun_colour.
+    const auto weights = [&](const glm::dvec3& d) {
+        if (d.y < 0.0) return glm::dvec2(0.2 / kPi * sky_scale * sky_horizontal, 0.2 / kPi * sun_scale * std::max(std::sin(el), 0.0));
+        const double chi = std::acos(std::clamp(glm::dot(d, sun), -1.0, 1.0));
+        return glm::dvec2(sky_scale * clear_sky(std::acos(std::clamp(d.y, 0.0, 1.0)), chi), 0.0);
+    };
     Environment environment;
     environment.radiance = tabulate(size, 2, [&](const glm::dvec3& d) {
-        if (d.y < 0.0) return glm::vec3(ground_radiance);
-        const double chi = std::acos(std::clamp(glm::dot(d, sun), -1.0, 1.0));
-        return glm::vec3(sky_scale * clear_sky(std::acos(std::clamp(d.y, 0.0, 1.0)), chi) * sky_colour);
+        const glm::dvec2 w = weights(d);
+        return glm::vec3(w.x * sky_colour + w.y * sun_colour);
     });
     environment.discs.push_back({sun, sun_radius, sun_scale / sun_solid_angle * sun_colour});
+    const Environment weight_cube{tabulate(size, 2, [&](const glm::dvec3& d) { return glm::vec3(weights(d), 0.0); }),
+                                  {{sun, sun_radius, glm::dvec3(0.0, sun_scale / sun_solid_angle, 0.0)}}, std::nullopt};
+    environment.spectral = SpectralForm{weight_cube.radiance_with_discs(), {daylight_spectrum(12000.0), daylight_spectrum(sky.sun_cct), {}}};
+    environment.spectral->spectra[2].assign(environment.spectral->spectra[0].size(), 0.0);
     return environment;
 }
 
@@ -260,6 +282,8 @@ glm::vec3 studio_radiance(const glm::dvec3& d) {
     return glm::vec3(static_cast<float>(base));
 }
 
+bool has_spectral_form(const std::string& source) { return source == "sky" || source.rfind("sky:", 0) == 0; }
+
 Sky parse_sky(const std::string& source) {
     Sky sky;
     if (source == "sky") return sky;
@@ -281,8 +305,8 @@ Sky parse_sky(const std::string& source) {
 Environment make_environment(const std::string& source, int size, const ResourceLimits& limits) {
     if (source.size() > kMaxEnvironmentSourceChars)
         throw UsageError("environment: " + std::to_string(source.size()) + " characters, longer than any list of six file names");
-    if (source == "studio") return {tabulate(size, 2, studio_radiance), {}};
-    if (source == "furnace") return {tabulate(size, 1, [](const glm::dvec3&) { return glm::vec3(1.0f); }), {}};
+    if (source == "studio") return {tabulate(size, 2, studio_radiance), {}, std::nullopt};
+    if (source == "furnace") return {tabulate(size, 1, [](const glm::dvec3&) { return glm::vec3(1.0f); }), {}, std::nullopt};
     if (source == "sky" || source.rfind("sky:", 0) == 0) return make_sky(parse_sky(source), size);
     // A bare word that is no file is most likely a misspelt built-in name.
     std::error_code error;

@@ -10,6 +10,7 @@
 // Errors (unknown name, unreadable file, wrong shape) throw fxview::Error naming the source.
 #pragma once
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,9 +40,20 @@ struct DiscLight {
 // exact for a mirror (alpha 0) and for lobes much wider than the disc.
 double disc_widened_alpha(double alpha, double angular_radius);
 
+// An environment's spectral form where it has one (the built-in sky): L(d, λ) = Σ_k w_k(d) S_k(λ)
+// for k < 3, each S_k of luminance 1 (CIE 1931: Σ S ȳ = Σ ȳ over 360-830 nm at 1 nm), so that the RGB
+// radiance is Σ_k w_k rgb(S_k). The weights are tabulated with the disc lights drawn in: what a mirror
+// sees. The spectral techniques (thin films) read it; RGB images have none (no uplift yet).
+struct SpectralForm {
+    FloatCube weights;                                // RGB: w_0, w_1, w_2
+    std::array<std::vector<double>, 3> spectra;       // 360-830 nm at 1 nm; an unused one is zero
+    static constexpr int kFirstNm = 360, kLastNm = 830;
+};
+
 struct Environment {
     FloatCube radiance;             // without the discs
     std::vector<DiscLight> discs;
+    std::optional<SpectralForm> spectral;
     // The radiance with the discs drawn in (supersampled per texel): the background and the mirror.
     FloatCube radiance_with_discs() const;
 };
@@ -57,5 +69,6 @@ struct Sky {
     double sun_cct = 5500.0;
 };
 Sky parse_sky(const std::string& source);  // "sky", "sky:ELEV" or "sky:ELEV,CCT"
+bool has_spectral_form(const std::string& source);  // the built-in sky's environments have one
 
 }  // namespace fxview::lighting

@@ -41,6 +41,22 @@ glm::dvec3 EnvironmentLookup::map_irradiance(const glm::dvec3& n) const {
 
 glm::dvec3 EnvironmentLookup::dfg(double nv, double roughness) const { return maps_->dfg().lookup(nv, roughness); }
 
+glm::dvec3 EnvironmentLookup::spectral_weights(const glm::dvec3& world, double* seam) const {
+    effect::SamplerState linear;
+    linear.min_filter = linear.mag_filter = GL_LINEAR;
+    const CubeSample w = sample_cube(maps_->spectral_weights_data(), linear, false, rotation_ * world);
+    if (seam) *seam = w.seam_spread * intensity_;
+    return glm::dvec3(w.value) * intensity_;
+}
+
+double EnvironmentLookup::spectral_radiance(const glm::dvec3& weights, int nm) const {
+    const auto& spectra = maps_->unfiltered().spectral->spectra;
+    const size_t i = static_cast<size_t>(nm - lighting::SpectralForm::kFirstNm);
+    double sum = 0;
+    for (size_t k = 0; k < 3; ++k) sum += weights[static_cast<int>(k)] * static_cast<double>(static_cast<float>(spectra[k][i]));
+    return sum;
+}
+
 glm::dvec3 EnvironmentLookup::unfiltered(const glm::dvec3& world) const {
     return glm::dvec3(lighting::sample_bilinear(maps_->unfiltered().radiance, rotation_ * world)) * intensity_;
 }

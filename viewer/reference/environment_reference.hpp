@@ -22,6 +22,12 @@ public:
     glm::dvec3 irradiance(const glm::dvec3& n) const;  // E / pi, at least 0
     glm::dvec3 map_irradiance(const glm::dvec3& n) const;  // the same without the disc lights (the SH alone)
     glm::dvec3 dfg(double nv, double roughness) const;  // A, B, G
+    // The environment's spectral form (environment_spectral.glsl): whether it has one, the weights of
+    // its three spectra towards world direction `d` (bilinear, as the GPU reads them, times the
+    // intensity), and spectrum k at `nm` (360-830) as the GPU's float texture holds it.
+    bool spectral() const { return maps_->has_spectral_form(); }
+    glm::dvec3 spectral_weights(const glm::dvec3& d, double* seam = nullptr) const;
+    double spectral_radiance(const glm::dvec3& weights, int nm) const;
     // The ground truth of ∫ L(l) f(l) (n·l) dl over the unfiltered environment: Monte Carlo with
     // `samples` directions (half cosine-, half GGX-distributed for `alpha` around n, combined by the
     // balance heuristic; a Hammersley set turned per pixel by `seed`) plus each disc light (the sun)

@@ -12,10 +12,12 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 
 #include "optics/prepared_stack.hpp"
 #include "optics/thesis_models.hpp"
 #include "optics/thin_film.hpp"
+#include "reference/environment_reference.hpp"
 #include "reference/film_fourier.hpp"
 #include "reference/spectral_integration.hpp"
 
@@ -28,7 +30,16 @@ struct Film {
     double thickness;  // nm at this pixel (layer A of a stack)
     optics::Stack stack;
     double dispersion_a, dispersion_b;  // Cauchy B of layers A and B (nm²), MultiLayer only
+    // Under the environment's spectral form (the built-in sky) with Incidence = view: its weights in
+    // the mirror direction of the eye, which light the film instead of the light spectrum.
+    std::optional<glm::dvec3> sky;
+    std::optional<EnvironmentLookup> environment;
 };
+
+// The light at `nm`: the light spectrum, or the sky seen in the mirror direction (thinfilm.fx light_at).
+double light_at(const Film& f, const SpectralSetup& s, int light, int nm) {
+    return f.sky ? f.environment->spectral_radiance(*f.sky, nm) : spectral::packed_value(*s.spectra, light, nm);
+}
 
 Film film(const ShadingInput& in, const ReferenceContext& c) {
     Film f{};
@@ -40,6 +51,11 @@ Film film(const ShadingInput& in, const ReferenceContext& c) {
     f.cos_light = std::clamp(glm::dot(n, glm::normalize(in.light - in.position)), 0.0, 1.0);
     f.cos_view = std::clamp(glm::dot(n, glm::normalize(in.camera - in.position)), 0.0, 1.0);
     f.cos0 = c.number("Incidence") == 1.0 ? f.cos_light : f.cos_view;
+    f.environment = EnvironmentLookup::from(c);
+    if (c.number("Incidence") == 0.0 && f.environment && f.environment->spectral() && c.environment->intensity > 0) {
+        const glm::dvec3 v = glm::normalize(in.camera - in.position);
+        f.sky = f.environment->spectral_weights(2.0 * glm::dot(n, v) * n - v);
+    }
     // An inverted paraboloid over the texture square, peaking at its centre (fig. 27).
     const glm::dvec2 centred = 2.0 * in.uv - 1.0;
     f.thickness = c.number("Thickness") + c.number("Variation") * std::max(1.0 - glm::dot(centred, centred), 0.0);
@@ -104,7 +120,7 @@ std::array<double, 4> film_colour(const Film& f, const ReferenceContext& c, cons
     const SpectralSetup s = spectral_setup(c);
     const int light = static_cast<int>(c.number("LightSpectrum"));
     const AtWavelength at = reflectance(f);
-    return to_rgba(integrate(s, false, [&](int nm) { return spectral::packed_value(*s.spectra, light, nm) * at(nm); }), s.mapping);
+    return to_rgba(integrate(s, false, [&](int nm) { return light_at(f, s, light, nm) * at(nm); }), s.mapping);
 }
 
 // The phase's float rounding is independent from wavelength to wavelength, so the colour error
@@ -195,7 +211,7 @@ double path_difference_slack(const ShadingInput& in, const ReferenceContext& c) 
         const double cycles = optics::thesis::path_difference(f.n0, f.n1, f.thickness, nm, f.cos_light, f.cos_view).cycles;
         // frac() jumps by 1 at 1, 2, ...; at 0 it is continuous (the argument is never negative).
         const bool on_jump = std::round(cycles) >= 1.0 && std::abs(cycles - std::round(cycles)) < 4e-6 * cycles;
-        return on_jump ? spectral::packed_value(*s.spectra, light, nm) : 0.0;
+        return on_jump ? light_at(f, s, light, nm) : 0.0;
     });
 }
 
@@ -213,7 +229,8 @@ std::array<double, 4> fourier_colour(const Film& f, const ReferenceContext& c, o
     technique.weight_s = polarisation == 2 ? 0.0 : polarisation == 1 ? 1.0 : 0.5;
     technique.weight_p = polarisation == 1 ? 0.0 : 1.0 - technique.weight_s;
     const reference::SingleFilm film{f.n0, f.n1, substrate, f.thickness, f.cos0};
-    if (const auto series = film_xyz_fourier_table(c.generated("FilmFourier"), setup.observer, light, film, technique)) {
+    // Under the sky the light is no spectrum of the table: the exact sum, as on the GPU.
+    if (const auto series = f.sky ? std::nullopt : film_xyz_fourier_table(c.generated("FilmFourier"), setup.observer, light, film, technique)) {
         spectral::Vec3 xyz = *series;
         for (double& v : xyz) v *= setup.brightness;
         return to_rgba(xyz, setup.mapping);
@@ -227,7 +244,7 @@ std::array<double, 4> fourier_colour(const Film& f, const ReferenceContext& c, o
     every_nm.k = 0;
     const optics::Stack stack{f.n0, {{f.n1, f.thickness}}, substrate};
     return to_rgba(integrate(every_nm, true, [&](int nm) {
-        return spectral::packed_value(*setup.spectra, light, nm) *
+        return light_at(f, setup, light, nm) *
                (technique.weight_s * optics::transfer_matrix(stack, nm, f.cos0, optics::Polarisation::S).reflectance +
                 technique.weight_p * optics::transfer_matrix(stack, nm, f.cos0, optics::Polarisation::P).reflectance);
     }), setup.mapping);

@@ -194,6 +194,13 @@ void EffectResources::add_texture(const std::string& name, TextureData data, boo
     cpu_copies_.emplace(name, std::move(data));
 }
 
+bool EffectResources::uses_only_spectral_environment() const {
+    if (environment_resources_.empty()) return false;
+    for (const auto& [name, resource] : environment_resources_)
+        if (!EnvironmentMaps::is_spectral_resource_name(resource)) return false;
+    return true;
+}
+
 EffectResources::EffectResources(const effect::Effect& effect, const effect::ParameterValues& values,
                                  const std::vector<std::string>& texture_dirs)
     : effect_(effect) {
@@ -204,7 +211,7 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
             if (resource.files.size() == 1 && resource.files[0].rfind("environment:", 0) == 0) {
                 if (!EnvironmentMaps::is_resource_name(resource.files[0]))
                     throw effect::EffectError(resource.where, "unknown environment texture '" + resource.files[0] +
-                                                                  "' (environment:specular, environment:irradiance or environment:dfg)");
+                                                                  "' (environment:specular, environment:irradiance, environment:dfg, environment:spectral-weights or environment:spectra)");
                 environment_resources_.emplace(resource.name, resource.files[0]);
                 continue;
             }

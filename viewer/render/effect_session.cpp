@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "core/text.hpp"
+#include "lighting/environment_sources.hpp"
 
 namespace fxview::render {
 
@@ -137,10 +138,18 @@ const EnvironmentMaps& EffectSession::environment(const scene::Environment& envi
     return *environment_;
 }
 
+bool EffectSession::uses_environment_at_all() const { return loaded_->resources->uses_environment(); }
+
 std::string EffectSession::unused_environment_warning(const scene::Environment& environment) const {
-    if (environment.source.empty() || loaded_->resources->uses_environment()) return "";
-    return path_ + ": warning: this effect's techniques are lit by the point light only; the environment '" + environment.source +
-           "' fills the background but does not light them";
+    if (environment.source.empty()) return "";
+    if (!loaded_->resources->uses_environment())
+        return path_ + ": warning: this effect's techniques are lit by the point light only; the environment '" + environment.source +
+               "' fills the background but does not light them";
+    if (loaded_->resources->uses_only_spectral_environment() && !lighting::has_spectral_form(environment.source))
+        return path_ + ": warning: the environment '" + environment.source +
+               "' has no spectral form (only the built-in sky has one); this effect's techniques stay lit by their light spectrum, "
+               "the environment fills the background";
+    return "";
 }
 
 std::string EffectSession::unused_light_radius_warning(const scene::Light& light) const {

@@ -48,8 +48,10 @@ public:
     // frame's effect samples them (render() calls this). Throws Error naming a bad source.
     const EnvironmentMaps& environment(const scene::Environment& environment);
     // Empty when the effect's shaders read the environment (or none is set); otherwise a warning that
-    // it only fills the background: said, never silently ignored.
+    // it only fills the background: said, never silently ignored. Effects that read only its spectral
+    // form (thin films) are warned where the environment has none (all but the built-in sky).
     std::string unused_environment_warning(const scene::Environment& environment) const;
+    bool uses_environment_at_all() const;  // declares environment textures (maybe only the spectral form's)
     // The same for a sphere light's radius that the selected technique does not read (LIGHTRADIUS).
     std::string unused_light_radius_warning(const scene::Light& light) const;
     std::vector<std::string> scene_warnings(const scene::Scene& scene) const;  // both of the above that apply

@@ -40,7 +40,11 @@ GpuTexture upload(const texture::TextureData& data, const std::string& source) {
 }  // namespace
 
 bool EnvironmentMaps::is_resource_name(const std::string& name) {
-    return name == "environment:specular" || name == "environment:irradiance" || name == "environment:dfg";
+    return name == "environment:specular" || name == "environment:irradiance" || name == "environment:dfg" || is_spectral_resource_name(name);
+}
+
+bool EnvironmentMaps::is_spectral_resource_name(const std::string& name) {
+    return name == "environment:spectral-weights" || name == "environment:spectra";
 }
 
 EnvironmentMaps::EnvironmentMaps(const std::string& source, const ResourceLimits& limits) : source_(source) {
@@ -104,12 +108,31 @@ EnvironmentMaps::EnvironmentMaps(const std::string& source, const ResourceLimits
         }
     texture::TextureData dfg{texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(dfg_.size, dfg_.size, table)}}, "split-sum DFG table"};
     dfg_texture_ = upload(dfg, dfg.source);
+
+    // The spectral form: its weights as a cube of one level, its spectra as a row of 471 texels (RGB the
+    // three spectra, alpha 1 where the environment has the form; all zero where it has none).
+    spectral_weights_data_ = texture::TextureData{texture::TextureType::Cube, texture::PixelFormat::RGBA32F, {}, specular_data_.source + " (spectral weights)"};
+    const lighting::FloatCube no_weights(1);
+    for (int face = 0; face < 6; ++face)
+        spectral_weights_data_.faces.push_back({cube_face_level(environment_.spectral ? environment_.spectral->weights : no_weights, face)});
+    spectral_weights_ = upload(spectral_weights_data_, spectral_weights_data_.source);
+    std::vector<float> spectra;
+    for (int nm = lighting::SpectralForm::kFirstNm; nm <= lighting::SpectralForm::kLastNm; ++nm) {
+        const size_t i = static_cast<size_t>(nm - lighting::SpectralForm::kFirstNm);
+        for (int k = 0; k < 3; ++k) spectra.push_back(environment_.spectral ? static_cast<float>(environment_.spectral->spectra[static_cast<size_t>(k)][i]) : 0.0f);
+        spectra.push_back(environment_.spectral ? 1.0f : 0.0f);
+    }
+    const int count = lighting::SpectralForm::kLastNm - lighting::SpectralForm::kFirstNm + 1;
+    texture::TextureData row{texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(count, 1, spectra)}}, specular_data_.source + " (spectra)"};
+    spectra_ = upload(row, row.source);
 }
 
 const GpuTexture* EnvironmentMaps::texture(const std::string& name) const {
     if (name == "environment:specular") return &specular_;
     if (name == "environment:irradiance") return &irradiance_;
     if (name == "environment:dfg") return &dfg_texture_;
+    if (name == "environment:spectral-weights") return &spectral_weights_;
+    if (name == "environment:spectra") return &spectra_;
     return nullptr;
 }
 

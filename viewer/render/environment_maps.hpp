@@ -8,6 +8,10 @@
 //                           two texels: direction and angular radius, radiance x solid angle and solid
 //                           angle (zero for no disc)
 //   environment:dfg         2D RGBA32F: (A, B, G) of the split sum per (n·v, roughness), clamped at the edges
+//   environment:spectral-weights  cube map, RGBA32F, one level: the weights of the environment's
+//                           spectral form (lighting::SpectralForm, the built-in sky's), discs drawn in
+//   environment:spectra     471x1 RGBA32F: its three spectra at 360-830 nm; alpha 1 where the
+//                           environment has a spectral form, all 0 where it has none
 // No source: black textures of one texel (an effect samples them and adds nothing).
 #pragma once
 #include <string>
@@ -33,6 +37,9 @@ public:
     // The texture an "environment:..." ResourceName names; nullptr for an unknown name.
     const GpuTexture* texture(const std::string& resource_name) const;
     static bool is_resource_name(const std::string& name);
+    static bool is_spectral_resource_name(const std::string& name);  // the spectral form's two
+    bool has_spectral_form() const { return environment_.spectral.has_value(); }
+    const texture::TextureData& spectral_weights_data() const { return spectral_weights_data_; }  // faces[face][0]
 
     // The same numbers on the CPU.
     const lighting::PrefilteredEnvironment& prefiltered() const { return prefiltered_; }
@@ -50,7 +57,8 @@ private:
     lighting::DfgTable dfg_;
     texture::TextureData specular_data_;
     std::vector<texture::TextureData> specular_levels_;
-    GpuTexture specular_, irradiance_, dfg_texture_, background_;
+    texture::TextureData spectral_weights_data_;
+    GpuTexture specular_, irradiance_, dfg_texture_, background_, spectral_weights_, spectra_;
 };
 
 }  // namespace fxview::render
