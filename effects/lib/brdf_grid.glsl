@@ -32,8 +32,13 @@ uniform float FxPhiI < string UIName = "Incidence azimuth"; float UIMin = 0; flo
 // the midpoints of a FxSampleSide² grid shifted by FxSampleShift: 0 cosine-weighted, 1 uniform over the hemisphere, 2 half vectors of a GGX
 // lobe of width FxSampleAlpha reflected about (v = 2 (l·h) h − l). Alpha is 0 where v is below the
 // surface. The CPU knows the same directions and weighs them (multiple importance sampling).
-uniform int FxSampleStrategy < string UIName = "Sampling strategy"; string UIWidget = "combo"; string UIItems = "cosine|uniform|half-vector";
+// Strategy 3 is the file's own sampler (a .brdf's isFunc: sampleBRDF and pdfBRDF, declared before
+// this file, with FX_BRDF_IS_FUNC defined); FxSampleOutput 1 writes each sample's direction v (rgb)
+// and the file's density for it (alpha, 0 without a sampler of its own) instead of f.
+uniform int FxSampleStrategy < string UIName = "Sampling strategy"; string UIWidget = "combo"; string UIItems = "cosine|uniform|half-vector|file's own";
                                string UIGroup = "BRDF grid"; > = 0;
+uniform int FxSampleOutput < string UIName = "Sample output"; string UIWidget = "combo"; string UIItems = "BRDF value|direction and file's density";
+                             string UIGroup = "BRDF grid"; > = 0;
 uniform float FxSampleAlpha < string UIName = "Sampled lobe width"; float UIMin = 0.001; float UIMax = 1; string UIGroup = "BRDF grid"; > = 0.1;
 uniform vec2 FxSampleShift < string UIName = "Sample shift"; string UIGroup = "BRDF grid"; > = vec2(0.0, 0.0);
 uniform int FxSampleSide < string UIName = "Sample grid"; int UIMin = 1; int UIMax = 4096; string UIGroup = "BRDF grid"; > = 64;
@@ -43,8 +48,17 @@ vec3 fx_incidence(float theta_degrees) {
     return vec3(sin(t) * cos(p), sin(t) * sin(p), cos(t));
 }
 
+#ifdef FX_BRDF_IS_FUNC
+vec3 fx_file_sample(vec3 l, vec3 n, vec3 x, vec3 y, vec2 u) { return sampleBRDF(l, n, x, y, u); }
+float fx_file_pdf(vec3 v, vec3 l, vec3 n, vec3 x, vec3 y) { return pdfBRDF(v, l, n, x, y); }
+#else
+vec3 fx_file_sample(vec3 l, vec3 n, vec3 x, vec3 y, vec2 u) { return vec3(0.0, 0.0, -1.0); }
+float fx_file_pdf(vec3 v, vec3 l, vec3 n, vec3 x, vec3 y) { return 0.0; }
+#endif
+
 vec3 fx_sampled_direction(vec3 l, vec2 u) {
     float phi = 6.28318530718 * u.y;
+    if (FxSampleStrategy == 3) return fx_file_sample(l, vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), u);
     if (FxSampleStrategy == 0) {
         float r = sqrt(u.x);
         return vec3(r * cos(phi), r * sin(phi), sqrt(max(1.0 - u.x, 0.0)));
@@ -92,6 +106,10 @@ GLSLShader FxBrdfGridFS {
             vec3 l = fx_incidence(1.0 + 2.0 * float(tile));
             vec3 v = fx_sampled_direction(l, fract((vec2(cell) + 0.5) / float(FxSampleSide) + FxSampleShift));
             if (cell.x >= FxSampleSide || cell.y >= FxSampleSide) v = vec3(0.0, 0.0, -1.0);
+            if (FxSampleOutput == 1) {
+                color = vec4(v, v.z > 0.0 ? fx_file_pdf(normalize(v), l, n, x, y) : 0.0);
+                return;
+            }
             if (v.z <= 0.0) {
                 color = vec4(0.0);
                 return;

@@ -33,6 +33,10 @@ vec3 environment_radiance(vec3 world_direction, float roughness) {
     return mix(a, b, lod - l0) * FxEnvironmentIntensity;
 }
 
+// The prefiltered roughness whose lobe (about 4 pi alpha^2 of solid angle) covers `share` steradians:
+// where a filtered importance sample reads the map.
+float environment_share_roughness(float share) { return sqrt(clamp(sqrt(share / (4.0 * 3.14159265358979323846)), 0.0, 1.0)); }
+
 // What a white Lambertian surface with normal `world_normal` reflects of the map without its disc
 // lights: irradiance / pi from order-2 SH.
 vec3 environment_map_irradiance(vec3 world_normal) {

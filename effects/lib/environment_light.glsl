@@ -29,12 +29,6 @@ vec3 environment_direction(vec3 n, vec3 v, vec3 x, vec3 y, int i, float alpha, o
     return l;
 }
 
-// The prefiltered roughness whose lobe (about 4 pi alpha^2 of solid angle) matches a sample's share.
-float environment_filter_roughness(float pdf) {
-    float share = 1.0 / (float(kFxEnvironmentSamples) * pdf);
-    return sqrt(clamp(sqrt(share / (4.0 * 3.14159265358979323846)), 0.0, 1.0));
-}
-
 vec3 environment_light(vec3 n, vec3 v, vec3 x, vec3 y, float alpha) {
     if (FxEnvironmentIntensity <= 0.0) return vec3(0.0);
     if (dot(n, v) < 0.01) {  // a silhouette: the normal bent towards the eye, the frame with it
@@ -50,7 +44,7 @@ vec3 environment_light(vec3 n, vec3 v, vec3 x, vec3 y, float alpha) {
         if (nl <= 0.0 || !(pdf > 0.0)) continue;
         vec3 f = fx_environment_brdf(l, v, n, x, y);
         if (any(isnan(f)) || any(isinf(f))) continue;  // as Lit draws such a BRDF black
-        sum += f * nl / pdf * environment_radiance(l, environment_filter_roughness(pdf));
+        sum += f * nl / pdf * environment_radiance(l, environment_share_roughness(1.0 / (float(kFxEnvironmentSamples) * pdf)));
     }
     // Each disc light through the BRDF at one point, the lobe's mean over the disc taken as that of a
     // GGX lobe of width alpha (environment_disc_alpha): the point nearest the mirror direction of the

@@ -13,7 +13,8 @@ uniform int ObjectSpectrum < string UIName = "Object spectrum"; string UIWidget 
 uniform float Brightness < string UIName = "Brightness"; float UIMin = 0; float UIMax = 8; float UIStep = 0.1; string UIGroup = "Lighting";
                            string UIHelp = "Intensity scale of the lit colour"; > = 2.0;
 uniform float Kd < string UIName = "Diffuse kd"; float UIMin = 0; float UIMax = 1; string UIGroup = "Lighting"; > = 0.8;
-uniform float Ks < string UIName = "Specular ks"; float UIMin = 0; float UIMax = 1; string UIGroup = "Lighting"; > = 0.4;
+uniform float Ks < string UIName = "Specular ks"; float UIMin = 0; float UIMax = 1; string UIGroup = "Lighting";
+                   string UIHelp = "Peak of the thesis' highlight lobe, which is not normalised: the surface can reflect more light than falls on it (lit head-on, Kd = Ks = 1 and power 1: 1.67 with Phong, 1.91 with Blinn)"; > = 0.4;
 uniform float Power < string UIName = "Specular power"; float UIMin = 1; float UIMax = 256; string UIGroup = "Lighting"; > = 32.0;
 uniform bool Metal < string UIName = "Metal"; string UIGroup = "Lighting";
                      string UIHelp = "On: a metal, whose highlight takes the object's colour; off: a dielectric, whose highlight takes the light's colour"; > = false;

@@ -73,26 +73,73 @@ void scan(const image::FloatImage& image, const brdf::SampleSet& set, BrdfCheck&
 }
 
 // The albedo of one tile from one grid's renders (one per strategy): Σ f cos θo p_k / Σ_j p_j² over
-// every strategy's N samples, over N (the power heuristic; a sample below the surface adds 0).
-std::array<double, 3> albedo_of(const std::vector<image::FloatImage>& renders, const std::vector<brdf::SampleSet>& sets, int tile) {
+// every strategy's N samples, over N (the power heuristic; a sample below the surface adds 0). With
+// `use_file`, the file's own sampler is one of the strategies: its directions and its density at every
+// sample come from `densities` (SampleRequest::directions); without, its samples are left out.
+std::array<double, 3> albedo_of(const std::vector<image::FloatImage>& renders, const std::vector<image::FloatImage>& densities,
+                                const std::vector<brdf::SampleSet>& sets, int tile, bool use_file) {
     const glm::dvec3 l = brdf::incident_direction(grid_incidence_degrees(tile), sets.front().phi_i_degrees);
     std::array<double, 3> sum{};
-    for (int k = 0; k < brdf::kSamplingStrategies; ++k) {
-        const brdf::SampleSet& set = sets[static_cast<size_t>(k)];
+    for (size_t k = 0; k < renders.size(); ++k) {
+        const brdf::SampleSet& set = sets[k];
+        const bool file = set.strategy == brdf::SamplingStrategy::File;
+        if (file && !use_file) continue;
         for (int b = 0; b < set.side; ++b)
             for (int a = 0; a < set.side; ++a) {
-                const float* f = sample_at(renders[static_cast<size_t>(k)], tile, a, b);
+                const float* f = sample_at(renders[k], tile, a, b);
                 if (f[3] == 0.0f || !std::isfinite(f[0]) || !std::isfinite(f[1]) || !std::isfinite(f[2])) continue;
-                glm::dvec3 v = brdf::sampled_direction(set, l, a, b);
+                const float* d = use_file ? sample_at(densities[k], tile, a, b) : nullptr;
+                glm::dvec3 v = file ? glm::dvec3(d[0], d[1], d[2]) : brdf::sampled_direction(set, l, a, b);
                 if (v.z <= 0) continue;
                 v = glm::normalize(v);
-                const double weight = v.z * brdf::mis_factor(k, l, v);
+                const double weight = v.z * brdf::mis_factor(static_cast<int>(k), l, v, use_file ? static_cast<double>(d[3]) : -1.0);
                 for (int c = 0; c < 3; ++c) sum[static_cast<size_t>(c)] += f[c] * weight;
             }
     }
     const double n = static_cast<double>(sets.front().side) * sets.front().side;
     for (double& x : sum) x /= n;
     return sum;
+}
+
+// ∫ p dω over the hemisphere of the file's density p at one tile, from one grid's direction renders,
+// by the built-in strategies alone (the power heuristic, as albedo_of).
+double density_integral(const std::vector<image::FloatImage>& densities, const std::vector<brdf::SampleSet>& sets, int tile) {
+    const glm::dvec3 l = brdf::incident_direction(grid_incidence_degrees(tile), sets.front().phi_i_degrees);
+    double sum = 0;
+    for (int k = 0; k < brdf::kSamplingStrategies; ++k)
+        for (int b = 0; b < sets[static_cast<size_t>(k)].side; ++b)
+            for (int a = 0; a < sets[static_cast<size_t>(k)].side; ++a) {
+                const float* d = sample_at(densities[static_cast<size_t>(k)], tile, a, b);
+                if (d[2] > 0.0f) sum += d[3] * brdf::mis_factor(k, l, glm::normalize(glm::dvec3(d[0], d[1], d[2])));
+            }
+    return sum / (static_cast<double>(sets.front().side) * sets.front().side);
+}
+
+// What is wrong with the file's sampling density, from both grids' direction renders: a value that is
+// negative or not a number, or more than a whole over the hemisphere where the built-in strategies
+// integrate it to within their error; "" if nothing.
+std::string density_problem(const std::array<std::vector<image::FloatImage>, 2>& densities, const std::array<std::vector<brdf::SampleSet>, 2>& sets) {
+    char text[256];
+    for (int tile = 0; tile < kGridIncidences; ++tile) {
+        for (size_t k = 0; k < densities[0].size(); ++k)
+            for (int b = 0; b < sets[0][k].side; ++b)
+                for (int a = 0; a < sets[0][k].side; ++a) {
+                    const float* d = sample_at(densities[0][k], tile, a, b);
+                    if (d[2] <= 0.0f || (std::isfinite(d[3]) && d[3] >= 0.0f)) continue;  // below the surface, or fine
+                    const auto [theta_o, phi_o] = polar_degrees(glm::normalize(glm::dvec3(d[0], d[1], d[2])));
+                    std::snprintf(text, sizeof text, "pdfBRDF is %g at theta_i %.0f, theta_o %.1f, phi_o %.1f deg", d[3], grid_incidence_degrees(tile),
+                                  theta_o, phi_o);
+                    return text;
+                }
+        const double integral = density_integral(densities[0], sets[0], tile), error = 3.0 * std::abs(integral - density_integral(densities[1], sets[1], tile));
+        // A density gives at most 1; 2 % beyond the estimate's error (the albedo's energy tolerance, doubled).
+        if (integral - error > 1.02) {
+            std::snprintf(text, sizeof text, "pdfBRDF integrates to %.3f +- %.1e over the hemisphere at theta_i %.0f deg (a density gives at most 1)",
+                          integral, error, grid_incidence_degrees(tile));
+            return text;
+        }
+    }
+    return "";
 }
 
 void find_reciprocity(const std::vector<image::FloatImage>& forward, const std::vector<image::FloatImage>& swapped,
@@ -132,7 +179,7 @@ void find_reciprocity(const std::vector<image::FloatImage>& forward, const std::
 
 }  // namespace
 
-BrdfCheckJob::BrdfCheckJob(BrdfCheckOptions options) : options_(std::move(options)) {
+BrdfCheckJob::BrdfCheckJob(BrdfCheckOptions options) : options_(std::move(options)), file_sampler_(options_.file_sampler) {
     if (options_.phi_i_degrees.empty()) throw UsageError("brdf-check: no azimuth of incidence to check");
     start_azimuth();
 }
@@ -147,8 +194,11 @@ void BrdfCheckJob::start_azimuth() {
 void BrdfCheckJob::queue_level() {
     stage_ = Stage::Albedo;
     const double phi_i = options_.phi_i_degrees[phi_index_];
-    for (int grid = 0; grid < 2; ++grid)
-        for (int k = 0; k < brdf::kSamplingStrategies; ++k) pending_.push_back({grid_set(k, level_, grid, phi_i), false});
+    for (int grid = 0; grid < 2; ++grid) {
+        for (int k = 0; k < strategies(); ++k) pending_.push_back({grid_set(k, level_, grid, phi_i), false});
+        if (file_sampler_)
+            for (int k = 0; k < strategies(); ++k) pending_.push_back({grid_set(k, level_, grid, phi_i), false, true});
+    }
 }
 
 std::optional<SampleRequest> BrdfCheckJob::next() {
@@ -163,7 +213,8 @@ void BrdfCheckJob::deliver(image::FloatImage image) {
     pending_.pop_front();
     if (image.width != kGridTilesX * request.set.side || image.height != kGridRows * request.set.side)
         throw Error("brdf-check: a sample image has the wrong size");
-    if (level_ == 0 || request.swapped) scan(image, request.set, check_, peak_);
+    if ((level_ == 0 || request.swapped) && !request.directions && request.set.strategy != brdf::SamplingStrategy::File)
+        scan(image, request.set, check_, peak_);
     ++renders_done_;
     received_.push_back(std::move(image));
     sets_.push_back(request.set);
@@ -178,30 +229,63 @@ double BrdfCheckJob::progress() const {
 }
 
 void BrdfCheckJob::advance() {
-    const auto K = static_cast<size_t>(brdf::kSamplingStrategies);
     if (stage_ == Stage::Albedo) {
-        const std::vector<image::FloatImage> first(std::make_move_iterator(received_.begin()), std::make_move_iterator(received_.begin() + K)),
-            second(std::make_move_iterator(received_.begin() + K), std::make_move_iterator(received_.end()));
-        const std::vector<brdf::SampleSet> first_sets(sets_.begin(), sets_.begin() + K), second_sets(sets_.begin() + K, sets_.end());
+        // Per grid: the strategies' f renders, then (with the file's sampler) their direction renders.
+        const auto S = static_cast<size_t>(strategies()), B = file_sampler_ ? 2 * S : S;
+        std::array<std::vector<image::FloatImage>, 2> values, densities;
+        std::array<std::vector<brdf::SampleSet>, 2> sets;
+        for (size_t g = 0; g < 2; ++g) {
+            const auto at = [&](size_t i) { return received_.begin() + static_cast<std::ptrdiff_t>(g * B + i); };
+            values[g].assign(std::make_move_iterator(at(0)), std::make_move_iterator(at(S)));
+            if (file_sampler_) densities[g].assign(std::make_move_iterator(at(S)), std::make_move_iterator(at(2 * S)));
+            sets[g].assign(sets_.begin() + static_cast<std::ptrdiff_t>(g * B), sets_.begin() + static_cast<std::ptrdiff_t>(g * B + S));
+        }
+        // The value and error estimate of a tile, with or without the file's sampler.
+        const auto estimate = [&](int tile, bool use_file, std::array<double, 3>& value, std::array<double, 3>& error) {
+            const auto a = albedo_of(values[0], densities[0], sets[0], tile, use_file), b = albedo_of(values[1], densities[1], sets[1], tile, use_file);
+            for (size_t c = 0; c < 3; ++c) {
+                value[c] = a[c];
+                error[c] = 3.0 * std::abs(a[c] - b[c]);
+            }
+        };
+        if (file_sampler_) {
+            // The file's density must be one, and its estimate must agree with the built-in strategies'
+            // alone (which need nothing of the file): a density that is not the sampler's own biases it.
+            std::string problem = density_problem(densities, sets);
+            for (int tile = 0; tile < kGridIncidences && problem.empty(); ++tile) {
+                std::array<double, 3> with{}, with_error{}, without{}, without_error{};
+                estimate(tile, true, with, with_error);
+                estimate(tile, false, without, without_error);
+                // Judged where the built-in strategies converge (elsewhere their error estimate is no bound).
+                for (size_t c = 0; c < 3 && problem.empty(); ++c)
+                    if (without_error[c] <= BrdfCheck::kConvergence * std::max(1.0, std::abs(without[c])) &&
+                        std::abs(with[c] - without[c]) > 3.0 * (with_error[c] + without_error[c]) + 1e-3 * std::max(1.0, std::abs(without[c]))) {
+                        char text[256];
+                        std::snprintf(text, sizeof text, "with it the albedo at theta_i %.0f deg is %.4f, with the built-in strategies alone %.4f +- %.1e",
+                                      grid_incidence_degrees(tile), with[c], without[c], without_error[c]);
+                        problem = text;
+                    }
+            }
+            if (!problem.empty()) {
+                file_sampler_ = false;
+                check_.file_sampling_note = "the file's importance sampling (isFunc) is not used: " + problem;
+            }
+        }
         bool all_converged = true;
         for (int tile = 0; tile < kGridIncidences; ++tile) {
             AlbedoEstimate& e = estimates_[static_cast<size_t>(tile)];
             if (level_ > 0 && e.converged) continue;
-            const auto a = albedo_of(first, first_sets, tile), b = albedo_of(second, second_sets, tile);
+            estimate(tile, file_sampler_, e.rgb, e.error);
             e.incidence_degrees = grid_incidence_degrees(tile);
             e.phi_i_degrees = options_.phi_i_degrees[phi_index_];
             double relative = 0;
-            for (size_t c = 0; c < 3; ++c) {
-                e.rgb[c] = a[c];
-                e.error[c] = 3.0 * std::abs(a[c] - b[c]);
-                relative = std::max(relative, e.error[c] / std::max(1.0, std::abs(e.rgb[c])));
-            }
+            for (size_t c = 0; c < 3; ++c) relative = std::max(relative, e.error[c] / std::max(1.0, std::abs(e.rgb[c])));
             e.converged = relative <= BrdfCheck::kConvergence;
             all_converged = all_converged && e.converged;
         }
         if (level_ == 0) {
-            forward_ = first;
-            forward_sets_ = first_sets;
+            forward_.assign(std::make_move_iterator(values[0].begin()), std::make_move_iterator(values[0].begin() + brdf::kSamplingStrategies));
+            forward_sets_.assign(sets[0].begin(), sets[0].begin() + brdf::kSamplingStrategies);
         }
         received_.clear();
         sets_.clear();
@@ -265,12 +349,13 @@ void BrdfCheckJob::finish() {
         check_.unresolved_reason = text;
     }
     check_.conserves_energy = check_.energy == BrdfCheck::Energy::Conserves;
+    check_.file_sampling = file_sampler_;
     check_.reciprocal = check_.reciprocity <= BrdfCheck::kReciprocityTolerance;
 }
 
 BrdfCheck check_brdf(const SampleRenderer& render, const BrdfCheckOptions& options) {
     BrdfCheckJob job(options);
-    while (const auto request = job.next()) job.deliver(render(request->set, request->swapped));
+    while (const auto request = job.next()) job.deliver(render(*request));
     return job.result();
 }
 

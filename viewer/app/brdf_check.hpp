@@ -24,14 +24,25 @@ double grid_incidence_degrees(int tile);  // θi of tile t: 1° + 2° t
 // 16 times that where the integral has not converged).
 constexpr int kSampleSide = 64;
 
+struct SampleRequest {
+    brdf::SampleSet set;
+    bool swapped = false;
+    // Instead of f: each sample's direction v (rgb; z <= 0 below the surface) and the file's own
+    // sampler's density for it (alpha), for a file whose sampler takes part (BrdfCheckOptions::file_sampler).
+    bool directions = false;
+};
+
 // f(l, v) (or f(v, l) when `swapped`) at the directions of a sample set: an image of
 // kGridTilesX·set.side × kGridRows·set.side, rows from the top (as read back from GL), alpha 0 where
-// the direction is below the surface.
-using SampleRenderer = std::function<image::FloatImage(const brdf::SampleSet& set, bool swapped)>;
+// the direction is below the surface; or the directions and densities SampleRequest::directions asks for.
+using SampleRenderer = std::function<image::FloatImage(const SampleRequest& request)>;
 
 struct BrdfCheckOptions {
     std::vector<double> phi_i_degrees = {0.0, 45.0, 90.0, 135.0};  // azimuths of incidence checked
     bool reciprocity = true;
+    // The file defines its own importance sampling (a .brdf's isFunc): one more strategy of the
+    // combination, once its density has passed the checks of brdf_check.cpp.
+    bool file_sampler = false;
 };
 
 struct AlbedoEstimate {
@@ -58,14 +69,11 @@ struct BrdfCheck {
     double reciprocity_incidence = 0, reciprocity_exitance = 0, reciprocity_azimuth = 0, reciprocity_phi_i = 0;  // degrees, where
     long negative = 0, non_finite = 0, samples = 0;
     std::array<double, 4> non_finite_where{};  // the first non-finite value's θi, φi, θo, φo (degrees)
+    bool file_sampling = false;      // the file's own sampler took part in every estimate
+    std::string file_sampling_note;  // why it did not, where the file has one
 };
 
 const char* energy_verdict(BrdfCheck::Energy energy);  // "conserves", "violates", "unresolved"
-
-struct SampleRequest {
-    brdf::SampleSet set;
-    bool swapped = false;
-};
 
 // The check as a sequence of renders, so that a viewer can spread it over its frames: render what
 // next() asks for and deliver() it, until next() asks for nothing; result() then holds the check.
@@ -86,6 +94,7 @@ private:
     void advance();  // the stage's renders are in: evaluate them, queue the next ones
     void finish_albedo();
     void finish();
+    int strategies() const { return file_sampler_ ? brdf::kSamplingStrategies + 1 : brdf::kSamplingStrategies; }
 
     BrdfCheckOptions options_;
     BrdfCheck check_;
@@ -94,6 +103,7 @@ private:
     int level_ = 0, renders_done_ = 0;
     double peak_ = 0;
     std::deque<SampleRequest> pending_;
+    bool file_sampler_ = false;  // the file's sampler takes part (until a check of it fails)
     std::vector<image::FloatImage> received_, forward_;  // this stage's renders; the azimuth's first-level f(l, v)
     std::vector<brdf::SampleSet> sets_, forward_sets_;
     std::vector<AlbedoEstimate> estimates_;

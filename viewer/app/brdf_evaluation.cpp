@@ -72,8 +72,10 @@ std::vector<std::string> grid_settings(int mode, bool swapped, double incidence,
             "FxIncidence=" + number(incidence), "FxPhiI=" + number(phi_i), "FxPhiD=" + number(phi_d)};
 }
 
-std::vector<std::string> sample_settings(const brdf::SampleSet& set, bool swapped) {
-    std::vector<std::string> settings = grid_settings(4, swapped, 0.0, set.phi_i_degrees);
+std::vector<std::string> sample_settings(const SampleRequest& request) {
+    const brdf::SampleSet& set = request.set;
+    std::vector<std::string> settings = grid_settings(4, request.swapped, 0.0, set.phi_i_degrees);
+    settings.push_back(std::string("FxSampleOutput=") + (request.directions ? "1" : "0"));
     char shift[96];
     std::snprintf(shift, sizeof shift, "FxSampleShift=%.17g,%.17g", set.shift.x, set.shift.y);
     settings.push_back(shift);
@@ -99,24 +101,28 @@ void follow_technique(render::EffectSession& session, const std::string& techniq
     effect::set_value_from_text(session.effect(), session.values(), "BrdfModel=" + technique);
 }
 
-image::FloatImage evaluate_brdf_samples(render::EffectSession& session, const brdf::SampleSet& set, bool swapped) {
-    return render_grid(session, kGridTilesX * set.side, kGridRows * set.side, sample_settings(set, swapped));
+image::FloatImage evaluate_brdf_samples(render::EffectSession& session, const SampleRequest& request) {
+    return render_grid(session, kGridTilesX * request.set.side, kGridRows * request.set.side, sample_settings(request));
 }
+
+bool has_file_sampler(const render::EffectSession& session) { return session.effect().find_parameter("FxFileSampler") != nullptr; }
 
 void draw_brdf_samples_rows(render::EffectSession& session, const effect::ParameterValues& values, const SampleRequest& request,
                             const gl::RenderTarget& target, int first_row, int rows) {
     glEnable(GL_SCISSOR_TEST);
     glScissor(0, first_row, target.width(), rows);
-    draw_grid(session, values, sample_settings(request.set, request.swapped), target);
+    draw_grid(session, values, sample_settings(request), target);
     glDisable(GL_SCISSOR_TEST);
 }
 
 SampleRenderer gpu_sample_renderer(render::EffectSession& session) {
-    return [&session](const brdf::SampleSet& set, bool swapped) { return evaluate_brdf_samples(session, set, swapped); };
+    return [&session](const SampleRequest& request) { return evaluate_brdf_samples(session, request); };
 }
 
 SampleRenderer measured_sample_renderer(const fit::MerlBrdf& merl) {
-    return [&merl](const brdf::SampleSet& set, bool swapped) {
+    return [&merl](const SampleRequest& request) {
+        const brdf::SampleSet& set = request.set;
+        const bool swapped = request.swapped;  // measured data have no sampler of their own: never asked for directions
         image::FloatImage image(kGridTilesX * set.side, kGridRows * set.side, 4);
         for (int tile = 0; tile < kGridIncidences; ++tile) {
             const glm::dvec3 l = brdf::incident_direction(grid_incidence_degrees(tile), set.phi_i_degrees);

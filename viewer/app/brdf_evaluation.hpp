@@ -27,8 +27,11 @@ void follow_technique(render::EffectSession& session, const std::string& techniq
 // f(L, V) (or f(V, L)) at the directions of a sample set (app/brdf_check.hpp's layout, rows from
 // the top), and brdf-check's renderers: the effect's on the GPU, a measured table's on the CPU (the
 // table must outlive the renderer).
-image::FloatImage evaluate_brdf_samples(render::EffectSession& session, const brdf::SampleSet& set, bool swapped);
+image::FloatImage evaluate_brdf_samples(render::EffectSession& session, const SampleRequest& request);
 SampleRenderer gpu_sample_renderer(render::EffectSession& session);
+// Whether the effect samples directions itself (a .brdf whose isFunc section defines sampleBRDF and
+// pdfBRDF: the translator then declares FxFileSampler), so that brdf-check can use its sampler.
+bool has_file_sampler(const render::EffectSession& session);
 // A request's rows [first_row, first_row + rows) (GL's, from the bottom) drawn into `target` (of
 // the request's size) with `values`, the rest of the target left as it is: the viewer spreads a
 // check's renders over its frames this way. The session's technique and values stay as they were.

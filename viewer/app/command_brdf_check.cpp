@@ -35,13 +35,17 @@ nlohmann::json to_json(const BrdfCheck& c, const std::string& path) {
             {"negative_samples", c.negative},
             {"non_finite_samples", c.non_finite},
             {"non_finite_where_deg", c.non_finite_where},
-            {"samples", c.samples}};
+            {"samples", c.samples},
+            {"file_sampling", c.file_sampling},
+            {"file_sampling_note", c.file_sampling_note}};
 }
 
 void print_text(const BrdfCheck& c, const std::string& path, const BrdfCheckOptions& options) {
-    std::printf("%s: %d incidence angles (1..89 deg) at %zu azimuth(s) of incidence, %d sampling strategies on two grids of at "
+    std::printf("%s: %d incidence angles (1..89 deg) at %zu azimuth(s) of incidence, %d sampling strategies%s on two grids of at "
                 "least %d directions each, up to 16 times that where needed\n",
-                path.c_str(), kGridIncidences, options.phi_i_degrees.size(), brdf::kSamplingStrategies, kSampleSide * kSampleSide);
+                path.c_str(), kGridIncidences, options.phi_i_degrees.size(), brdf::kSamplingStrategies + (c.file_sampling ? 1 : 0),
+                c.file_sampling ? " (the file's own isFunc among them)" : "", kSampleSide * kSampleSide);
+    if (!c.file_sampling_note.empty()) std::printf("%s: warning: %s\n", path.c_str(), c.file_sampling_note.c_str());
     std::printf("directional albedo (R G B +- estimated error) at phi_i %g deg:\n", options.phi_i_degrees.front());
     for (size_t i = 0; i < static_cast<size_t>(kGridIncidences); ++i) {
         const AlbedoEstimate& e = c.albedo[i];
@@ -89,6 +93,7 @@ CommandRunner add_brdf_check_command(CLI::App& app) {
         BrdfEvaluation evaluation(o->effect, o->backend);
         BrdfCheckOptions options;
         if (!o->phi_i.empty()) options.phi_i_degrees = o->phi_i;
+        options.file_sampler = has_file_sampler(evaluation.session());
         const BrdfCheck c = check_brdf(gpu_sample_renderer(evaluation.session()), options);
         if (o->json) std::cout << to_json(c, o->effect.path).dump() << "\n";
         else print_text(c, o->effect.path, options);

@@ -15,6 +15,7 @@ SampleSet sample_set(int strategy_index, int side, glm::dvec2 shift, double phi_
     set.phi_i_degrees = phi_i_degrees;
     if (strategy_index == 0) set.strategy = SamplingStrategy::Cosine;
     else if (strategy_index == 1) set.strategy = SamplingStrategy::Uniform;
+    else if (strategy_index == kFileStrategy) set.strategy = SamplingStrategy::File;
     else {
         set.strategy = SamplingStrategy::HalfVector;
         set.alpha = kSampledLobeWidths[static_cast<size_t>(strategy_index - 2)];
@@ -41,6 +42,7 @@ glm::dvec3 sampled_direction(const SampleSet& set, const glm::dvec3& l, int a, i
             return {s * std::cos(phi), s * std::sin(phi), u};
         }
         case SamplingStrategy::HalfVector: break;
+        case SamplingStrategy::File: return {0.0, 0.0, -1.0};  // only the GPU knows it
     }
     // GGX's inverse CDF in cos²θh: ∫ D (n·h) dω over θh < θ is tan²θ / (α² + tan²θ).
     const double a2 = set.alpha * set.alpha, c2 = (1.0 - u) / (1.0 + (a2 - 1.0) * u), sh = std::sqrt(std::max(1.0 - c2, 0.0));
@@ -52,6 +54,7 @@ double strategy_pdf(int strategy_index, const glm::dvec3& l, const glm::dvec3& v
     if (v.z <= 0) return 0.0;
     if (strategy_index == 0) return v.z / std::numbers::pi;
     if (strategy_index == 1) return 0.5 / std::numbers::pi;
+    if (strategy_index >= kSamplingStrategies) return 0.0;  // the file's own: only the GPU knows it
     const glm::dvec3 sum = l + v;
     const double length = glm::length(sum);
     if (length < 1e-12) return 0.0;
@@ -62,8 +65,12 @@ double strategy_pdf(int strategy_index, const glm::dvec3& l, const glm::dvec3& v
     return ggx_distribution(h.z, kSampledLobeWidths[static_cast<size_t>(strategy_index - 2)]) * h.z / (4.0 * v_dot_h);
 }
 
-double mis_factor(int strategy_index, const glm::dvec3& l, const glm::dvec3& v) {
+double mis_factor(int strategy_index, const glm::dvec3& l, const glm::dvec3& v, double file_pdf) {
     double squares = 0, own = 0;
+    if (file_pdf >= 0.0) {
+        squares = file_pdf * file_pdf;
+        if (strategy_index == kFileStrategy) own = file_pdf;
+    }
     for (int k = 0; k < kSamplingStrategies; ++k) {
         const double p = strategy_pdf(k, l, v);
         squares += p * p;

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -87,6 +88,38 @@ bool defines_brdf_function(const std::string& line) {
     return false;
 }
 
+// The parameter types of the first definition `RETURN NAME(TYPE a, TYPE b, ...)` in `text` (qualifiers
+// in/const dropped), or nothing if there is none.
+std::optional<std::vector<std::string>> parameter_types(const std::string& text, const std::string& return_type, const std::string& name) {
+    for (size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
+        if ((at > 0 && is_identifier_char(text[at - 1])) || (at + name.size() < text.size() && is_identifier_char(text[at + name.size()]))) continue;
+        const std::vector<std::string> before = words(text.substr(at >= 64 ? at - 64 : 0, at >= 64 ? 64 : at));
+        size_t open = at + name.size();
+        while (open < text.size() && std::isspace(static_cast<unsigned char>(text[open]))) ++open;
+        if (before.empty() || before.back() != return_type || open >= text.size() || text[open] != '(') continue;
+        const size_t close = text.find(')', open);
+        if (close == std::string::npos) return std::nullopt;
+        std::vector<std::string> types;
+        std::stringstream list(text.substr(open + 1, close - open - 1));
+        for (std::string parameter; std::getline(list, parameter, ',');) {
+            std::vector<std::string> w = words(trim(parameter));
+            while (!w.empty() && (w.front() == "in" || w.front() == "const")) w.erase(w.begin());
+            if (!w.empty()) types.push_back(w.front());
+        }
+        return types;
+    }
+    return std::nullopt;
+}
+
+// Whether an isFunc section defines the sampler fxview uses (docs/effect-format.md): a direction drawn
+// for a given one, and the density it is drawn with.
+bool defines_sampler(const std::string& section) {
+    return parameter_types(section, "vec3", "sampleBRDF") == std::vector<std::string>{"vec3", "vec3", "vec3", "vec3", "vec2"} &&
+           parameter_types(section, "float", "pdfBRDF") == std::vector<std::string>{"vec3", "vec3", "vec3", "vec3", "vec3"};
+}
+
+constexpr const char* kSamplerSignature = "vec3 sampleBRDF(vec3 V, vec3 N, vec3 X, vec3 Y, vec2 u) and float pdfBRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)";
+
 // Names the programs a .brdf file is compiled into already declare at global scope (effects/lib:
 // vertex inputs and outputs, the output `color`, the scene's uniforms; the environment's helpers are
 // every name starting with environment_, is_reserved()). A file's own use of one is renamed
@@ -146,13 +179,33 @@ TranslatedLines translate_brdf_file(const std::string& path, const std::vector<s
     Block block = Block::None;
     int block_start = 0;
     bool has_shader = false, seen_kind = false, defines_brdf = false;
+    // The isFunc section: compiled after the shader block (it may call its helpers) where it defines
+    // the sampler fxview uses, else skipped with a warning.
+    std::vector<std::pair<std::string, int>> sampler;
+    int sampler_start = 0;
+    bool uses_sampler = false;
+    const auto end_sampler = [&] {
+        std::string text;
+        for (const auto& [line, number] : sampler) text += line + "\n";
+        uses_sampler = defines_sampler(text);
+        if (!uses_sampler) {
+            warn(sampler_start, std::string("the importance-sampling section 'isFunc' does not define ") + kSamplerSignature +
+                                    ", which fxview samples with; skipped (brdf-check samples with its own strategies)");
+            sampler.clear();
+        }
+    };
     int shader_start = 0;
     for (size_t i = 0; i < lines.size(); ++i) {
         const int number = static_cast<int>(i + 1);
         const SourceLocation where{path, number};
         const std::string line = trim(lines[i]);
         if (block == Block::Skipped) {
-            if (words(line) == std::vector<std::string>{"::end", skipped}) block = Block::None;
+            if (words(line) == std::vector<std::string>{"::end", skipped}) {
+                block = Block::None;
+                if (skipped == "isFunc") end_sampler();
+            } else if (skipped == "isFunc") {
+                sampler.emplace_back(lines[i], number);
+            }
             emit("", number);
             continue;
         }
@@ -196,8 +249,12 @@ TranslatedLines translate_brdf_file(const std::string& path, const std::vector<s
                 skipped = w[1];
                 block = Block::Skipped;
                 block_start = number;
-                warn(number, w[1] == "isFunc" ? "the importance-sampling section 'isFunc' is not used (brdf-check samples with its own strategies); skipped"
-                                              : "unknown section '" + excerpt(w[1]) + "' skipped");
+                if (w[1] == "isFunc") {
+                    if (sampler_start) throw EffectError(where, "a second isFunc section");
+                    sampler_start = number;
+                } else {
+                    warn(number, "unknown section '" + excerpt(w[1]) + "' skipped");
+                }
             } else {
                 throw EffectError(where, "unexpected '" + excerpt(line) + "'" +
                                              (block == Block::Parameters ? " inside the parameters block (it ends with '::end parameters')" : ""));
@@ -237,10 +294,20 @@ TranslatedLines translate_brdf_file(const std::string& path, const std::vector<s
         warn(block_start, "'::begin shader' without '::end shader': the shader ends at the end of the file");
         block = Block::None;
     }
-    if (block == Block::Skipped) warn(block_start, "section '" + excerpt(skipped) + "' without '::end " + excerpt(skipped) + "': skipped to the end of the file");
+    if (block == Block::Skipped) {
+        warn(block_start, "section '" + excerpt(skipped) + "' without '::end " + excerpt(skipped) + "': " +
+                              (skipped == "isFunc" ? "it ends at the end of the file" : "skipped to the end of the file"));
+        if (skipped == "isFunc") end_sampler();
+    }
     if (!has_shader) throw EffectError({path, last}, "no '::begin shader' block defining vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)");
     if (!defines_brdf)
         throw EffectError({path, shader_start}, "the shader block does not define vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)");
+    if (uses_sampler) {
+        // brdf_grid.glsl calls it where FX_BRDF_IS_FUNC is defined; FxFileSampler tells brdf-check.
+        emit("#define FX_BRDF_IS_FUNC 1", sampler_start);
+        emit("uniform bool FxFileSampler < string UIName = \"File's own sampling (isFunc)\"; string UIGroup = \"BRDF grid\"; > = true;", sampler_start);
+        for (const auto& [text, number] : sampler) emit(rename_reserved(text, renamed), number);
+    }
     for (const std::string& name : renamed)
         warn(shader_start, "the shader block's '" + name + "' is renamed brdf_" + name + " (fxview's shaders hold that name)");
     // The techniques that render BRDF() (effects/lib/brdf_file.glsl), after it is defined.

@@ -3,8 +3,8 @@
 // of θ); θ is searched over its whole range on a log scale (20 points per decade in one dimension,
 // 5 per decade in two, then a compass search from the best few grid points), and everything is
 // polished together by the bounded Levenberg-Marquardt (bounded_levenberg_marquardt.hpp) with the
-// models' analytic derivatives. Large data (a MERL file) are searched on an evenly strided subset
-// and polished on all samples.
+// models' analytic derivatives. Large data (a MERL file) are searched on an evenly strided subset;
+// the refined minima are ranked again over all samples and the near-tied ones all polished.
 #pragma once
 #include <array>
 #include <functional>

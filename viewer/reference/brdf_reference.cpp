@@ -231,7 +231,7 @@ glm::dvec3 lambert_environment(const EnvironmentLookup& environment, const brdf:
 }
 
 glm::dvec3 pbr_environment(const EnvironmentLookup& environment, const brdf::Directions& d, const ReferenceContext& c, double* seam) {
-    return metallic_roughness_environment(environment, d, pbr(c), c.number("EnergyCompensation") != 0.0, seam);
+    return metallic_roughness_environment(environment, d, pbr(c), c.number("EnergyCompensation") != 0.0, c.number("LobeSampling") != 0.0, seam);
 }
 
 glm::dvec3 lambert_truth(const EnvironmentLookup& environment, const brdf::Directions& d, const ReferenceContext& c, unsigned seed) {

@@ -31,6 +31,34 @@ glm::dvec3 EnvironmentLookup::radiance(const glm::dvec3& world, double roughness
     return glm::mix(glm::dvec3(a.value), glm::dvec3(b.value), lod - l0) * intensity_;
 }
 
+glm::dvec3 EnvironmentLookup::lobe_radiance(const glm::dvec3& n, const glm::dvec3& v, const glm::dvec3& f0, double roughness, double* seam) const {
+    constexpr int kSamples = 16;
+    const double alpha = std::max(roughness * roughness, 1e-4), nv = std::max(glm::dot(n, v), 1e-4);
+    const double s = n.z >= 0.0 ? 1.0 : -1.0, a = -1.0 / (s + n.z), b = n.x * n.y * a;  // Duff et al. 2017
+    const glm::dvec3 x(1.0 + s * n.x * n.x * a, s * b, -s * n.x), y(b, s + n.y * n.y * a, -n.y);
+    glm::dvec3 sum(0.0), total(0.0);
+    double spread = 0.0;
+    for (int i = 0; i < kSamples; ++i) {
+        const glm::dvec2 u = lighting::hammersley(static_cast<unsigned>(i), kSamples);
+        const glm::dvec3 hl = lighting::sample_ggx(u.x, u.y, alpha);
+        const glm::dvec3 h = hl.x * x + hl.y * y + hl.z * n;
+        const double vh = glm::dot(v, h);
+        const glm::dvec3 l = 2.0 * vh * h - v;
+        const double nl = glm::dot(n, l);
+        if (nl <= 0.0 || vh <= 0.0) continue;
+        const double pdf = lighting::ggx_d(hl.z, alpha) * hl.z / (4.0 * vh);
+        const double share = 1.0 / (kSamples * pdf);
+        const glm::dvec3 weight = (f0 + (1.0 - f0) * std::pow(std::clamp(1.0 - vh, 0.0, 1.0), 5.0)) * (brdf::smith_ggx_correlated(nl, nv, alpha) * vh / hl.z);
+        double seam_here = 0.0;
+        sum += weight * radiance(l, std::sqrt(std::clamp(std::sqrt(share / (4.0 * std::numbers::pi)), 0.0, 1.0)), &seam_here);
+        total += weight;
+        spread = std::max(spread, seam_here);
+    }
+    if (seam) *seam = spread;
+    if (!(total.r + total.g + total.b > 0.0)) return radiance(2.0 * glm::dot(n, v) * n - v, roughness, seam);
+    return sum / glm::max(total, glm::dvec3(1e-30));
+}
+
 glm::dvec3 EnvironmentLookup::irradiance(const glm::dvec3& n) const {
     return lighting::evaluate_irradiance(maps_->prefiltered(), rotation_ * n) * intensity_;
 }
@@ -113,16 +141,24 @@ glm::dvec3 metallic_roughness_compensated(const EnvironmentLookup& environment, 
 }
 
 glm::dvec3 metallic_roughness_environment(const EnvironmentLookup& environment, const brdf::Directions& facing, const brdf::MetallicRoughness& m,
-                                          bool compensation, double* seam) {
+                                          bool compensation, bool lobe_sampling, double* seam) {
     const brdf::Directions d = environment_facing(facing);
     const double nv = glm::dot(d.n, d.v);
     const glm::dvec3 f0 = glm::mix(glm::dvec3(0.04), m.base_color, m.metallic);
     const glm::dvec3 ab = environment.dfg(nv, m.roughness);
     const glm::dvec3 scale = compensation ? 1.0 + f0 * (1.0 / std::max(ab.x + ab.y, 1e-4) - 1.0) : glm::dvec3(1.0);
-    // The lobe's dominant direction: the mirror direction turned towards n as the surface roughens.
-    const double a = std::clamp(m.roughness, 0.0, 1.0), s = (1.0 - a) * (std::sqrt(1.0 - a) + a);
-    const glm::dvec3 r = glm::normalize(glm::mix(d.n, 2.0 * nv * d.n - d.v, s));
-    const glm::dvec3 specular = (f0 * ab.x + ab.y) * scale * environment.radiance(r, m.roughness, seam);
+    // environment_pbr.glsl's environment_specular_radiance: the sampled lobe, blending into the
+    // dominant direction's level from roughness 0.5 to 1 (or that level alone).
+    const double t = lobe_sampling ? std::clamp(2.0 * m.roughness - 1.0, 0.0, 1.0) : 1.0;
+    glm::dvec3 radiance(0.0);
+    if (t < 1.0) radiance += (1.0 - t) * environment.lobe_radiance(d.n, d.v, f0, m.roughness, seam);
+    if (t > 0.0) {
+        const double a = std::clamp(m.roughness, 0.0, 1.0), s = (1.0 - a) * (std::sqrt(1.0 - a) + a);
+        double seam_dominant = 0.0;
+        radiance += t * environment.radiance(glm::normalize(glm::mix(d.n, 2.0 * nv * d.n - d.v, s)), m.roughness, seam ? &seam_dominant : nullptr);
+        if (seam) *seam = std::max(*seam, seam_dominant);
+    }
+    const glm::dvec3 specular = (f0 * ab.x + ab.y) * scale * radiance;
     const glm::dvec3 map = specular + (1.0 - f0) * (1.0 - ab.z) * (1.0 - m.metallic) * m.base_color * environment.map_irradiance(d.n);
     // The disc lights through the BRDF at their centres, its lobe widened by each (metallic_roughness_discs).
     glm::dvec3 discs(0.0);

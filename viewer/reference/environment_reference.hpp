@@ -19,6 +19,9 @@ public:
     // Prefiltered radiance towards world direction `d` for `roughness`; `seam` gets the spread of the
     // texels at a cube corner (where GL leaves the texel to the implementation).
     glm::dvec3 radiance(const glm::dvec3& d, double roughness, double* seam = nullptr) const;
+    // The mean radiance a GGX lobe of `roughness` gathers for normal n and eye v (environment_pbr.glsl's
+    // environment_lobe_radiance: 16 filtered samples weighted by Fresnel with `f0` and masking).
+    glm::dvec3 lobe_radiance(const glm::dvec3& n, const glm::dvec3& v, const glm::dvec3& f0, double roughness, double* seam = nullptr) const;
     glm::dvec3 irradiance(const glm::dvec3& n) const;  // E / pi, at least 0
     glm::dvec3 map_irradiance(const glm::dvec3& n) const;  // the same without the disc lights (the SH alone)
     glm::dvec3 dfg(double nv, double roughness) const;  // A, B, G
@@ -50,7 +53,7 @@ private:
     // As environment_light.glsl shades them (see light()).
     glm::dvec3 discs_shaded(const brdf::Directions& d, const std::function<glm::dvec3(const glm::dvec3&)>& f, double alpha) const;
     friend glm::dvec3 metallic_roughness_environment(const EnvironmentLookup&, const brdf::Directions&, const brdf::MetallicRoughness&, bool,
-                                                     double*);
+                                                     bool, double*);
     glm::dmat3 rotation_{1.0};
     double intensity_ = 0.0;
 };
@@ -64,9 +67,9 @@ brdf::Directions environment_facing(const brdf::Directions& d);
 glm::dvec3 metallic_roughness_compensated(const EnvironmentLookup& environment, const brdf::Directions& d, const brdf::MetallicRoughness& m,
                                           bool compensation);
 
-// metallic_roughness_environment() of environment.glsl.
+// metallic_roughness_environment() of environment_pbr.glsl; `lobe_sampling` as its LobeSampling.
 glm::dvec3 metallic_roughness_environment(const EnvironmentLookup& environment, const brdf::Directions& d, const brdf::MetallicRoughness& m,
-                                          bool compensation, double* seam = nullptr);
+                                          bool compensation, bool lobe_sampling = true, double* seam = nullptr);
 
 }  // namespace fxview::reference
 

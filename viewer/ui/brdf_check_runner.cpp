@@ -11,7 +11,9 @@ namespace fxview::ui {
 
 void BrdfCheckRunner::start(const render::EffectSession& session) {
     values_ = session.values();
-    job_.emplace();
+    app::BrdfCheckOptions options;
+    options.file_sampler = app::has_file_sampler(session);
+    job_.emplace(options);
     result_.reset();
     target_.reset();
     next_row_ = 0;

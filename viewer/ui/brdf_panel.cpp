@@ -316,6 +316,12 @@ void BrdfPanel::draw(render::EffectSession* session) {
     ImGui::Text("reciprocity: largest relative |f(l,v) - f(v,l)| %.3g: %s", check_->reciprocity,
                 check_->reciprocal ? "reciprocal" : "not reciprocal");
     ImGui::Text("negative at %ld, NaN or infinite at %ld of %ld samples", check_->negative, check_->non_finite, check_->samples);
+    if (check_->file_sampling) ImGui::TextWrapped("The file's own importance sampling (isFunc) took part.");
+    if (!check_->file_sampling_note.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
+        ImGui::TextWrapped("%s.", check_->file_sampling_note.c_str());
+        ImGui::PopStyleColor();
+    }
 }
 
 }  // namespace fxview::ui

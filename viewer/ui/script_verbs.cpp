@@ -209,7 +209,8 @@ void Viewer::verb_brdf_check(const ScriptAction& a) {  // as the BRDF tab's Chec
     std::cout << nlohmann::json{{"brdf_check", {{"max_albedo", c.max_albedo}, {"conserves_energy", c.conserves_energy},
                                                 {"energy", app::energy_verdict(c.energy)}, {"unresolved_reason", c.unresolved_reason},
                                                 {"reciprocity_max_relative", c.reciprocity}, {"reciprocal", c.reciprocal},
-                                                {"negative_samples", c.negative}, {"non_finite_samples", c.non_finite}}},
+                                                {"negative_samples", c.negative}, {"non_finite_samples", c.non_finite},
+                                                {"file_sampling", c.file_sampling}, {"file_sampling_note", c.file_sampling_note}}},
                                 {"frames_while_checking", frame_number_ - brdf_check_start_frame_}}
                      .dump()
               << std::endl;
