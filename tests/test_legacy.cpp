@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <fstream>
 
 #include "effect/effect_program.hpp"
 #include "effect/parser.hpp"
@@ -313,6 +314,55 @@ TEST_CASE("DirectX SDK and Cg Toolkit idioms: float4x3 World, ViewPosition, unty
     const image::FloatImage toolkit = render_effect("cg_toolkit.cgfx");
     CHECK(overlap(toolkit, reference) > 0.98);
     CHECK(luminance(toolkit.pixel(44, 20)) > luminance(toolkit.pixel(20, 44)) + 0.05);  // lit towards the light
+}
+
+TEST_CASE("idioms of the real legacy corpus: Cg's varying, transposed matrix semantics, expression defaults, matrices set by name") {
+    // Found by a measurement on 33 real files (docs/legacy-effects.md): basic_phong.cgfx failed on
+    // `varying`; relief_mapping.cgfx's WorldViewProjectionTranspose multiplied vector first was taken
+    // for row vectors (garbage on screen); scene_tonemap.fx's `= 1.0 / 2.2` was dropped to 0 (white);
+    // CustomUI.fx's semantic-less matrices stayed zero (nothing drawn).
+    const effect::Effect cg = effect::load_effect(kLegacy + "/cg_varying_transposed.cgfx", load_options());
+    CHECK(!cg.row_vectors);  // mul(v, Mᵀ) counts as mul(M, v)
+    CHECK(parameter(cg, "Gamma").default_value->numbers == std::vector<double>{1.0 / 2.2});
+    const std::vector<double> tint = parameter(cg, "Tint").default_value->numbers;
+    CHECK(tint.size() == 3);
+    CHECK(tint[0] == doctest::Approx(0.8));
+    CHECK(tint[1] == doctest::Approx(0.5));
+    CHECK(tint[2] == doctest::Approx(0.5));
+    const effect::Effect dx = effect::load_effect(kLegacy + "/dx_sdk_app_matrices.fx", load_options());
+    CHECK(parameter(dx, "g_mWorldViewProjection").semantic == "WORLDVIEWPROJECTION");
+    CHECK(parameter(dx, "g_mWorld").semantic == "WORLD");
+    CHECK(parameter(dx, "MeshTextureSampler").ui.label == "Mesh texture");  // the texture object's UIName
+    bool said = false;
+    for (const auto& w : dx.warnings) said = said || w.find("g_mWorld has no semantic; fxview supplies it as WORLD by its name") != std::string::npos;
+    CHECK(said);
+    const image::FloatImage reference = debug_view();
+    for (const std::string file : {"cg_varying_transposed.cgfx", "dx_sdk_app_matrices.fx"}) {
+        CAPTURE(file);
+        const image::FloatImage picture = render_effect(file);
+        CHECK(overlap(picture, reference) > 0.98);
+        CHECK(luminance(picture.pixel(44, 20)) > luminance(picture.pixel(20, 44)) + 0.05);  // lit towards the light
+    }
+    // VertexShader = null (the DirectX SDK's post-processing samples): DirectX's fixed-function
+    // vertex stage puts the object where the debug view does and hands the pixel shader the mesh's
+    // texture coordinates (its output adds them to red and green: not flat).
+    const effect::Effect pp = effect::load_effect(kLegacy + "/pp_null_vertex.fx", load_options());
+    CHECK(parameter(pp, "fxview_fixed_function_wvp").semantic == "WORLDVIEWPROJECTION");
+    const image::FloatImage post = render_effect("pp_null_vertex.fx");
+    CHECK(overlap(post, reference) > 0.98);
+    CHECK(std::abs(post.pixel(20, 32)[0] - post.pixel(44, 32)[0]) > 0.1);
+    // An expression that is no constant is said, not silently zero.
+    const std::string odd = temp_path("odd_default.fx");
+    {
+        std::ifstream in(kLegacy + "/dx_sdk_app_matrices.fx");
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        text.insert(0, "float Odd = sqrt(2.0);\n");
+        std::ofstream(odd) << text;
+    }
+    const effect::Effect with_odd = effect::load_effect(odd, load_options());
+    said = false;
+    for (const auto& w : with_odd.warnings) said = said || w.find("odd_default.fx:1: warning: the default of Odd is an expression fxview does not evaluate") != std::string::npos;
+    CHECK(said);
 }
 
 TEST_CASE("which files are legacy: .cgfx always, .fx without GLSL blocks whose passes compile functions") {

@@ -15,6 +15,7 @@
 #include "context/context.hpp"
 #include "core/error.hpp"
 #include "gl/texture_upload.hpp"
+#include "texture/placeholder.hpp"
 #include "image/image_file.hpp"
 #include "texture/texture_file.hpp"
 
@@ -387,4 +388,26 @@ TEST_CASE("CPU sampler: GL's nearest and linear filtering and wrap modes, checke
     CHECK(reference::sample_2d(row, s, false, {0.0, 0.5}).r == doctest::Approx(1.5));    // between texels 3 and 0
     s.min_filter = GL_LINEAR_MIPMAP_LINEAR;
     CHECK_THROWS_AS(reference::sample_2d(row, s, false, {0.5, 0.5}), Error);
+}
+
+TEST_CASE("a missing texture's stand-in follows its name: normal maps by word, not by any letters that spell one") {
+    // The real legacy corpus: XToon.cgfx's XToonMap got a flat normal map ("toon map" holds "nmap")
+    // and its toon shading came out one flat colour.
+    CHECK(texture::placeholder_kind(texture::TextureType::Tex2D, "XToonMap") == "grey checker");
+    CHECK(texture::placeholder_kind(texture::TextureType::Tex2D, "nmapTex") == "flat normal map");
+    CHECK(texture::placeholder_kind(texture::TextureType::Tex2D, "bump_nmap") == "flat normal map");
+    CHECK(texture::placeholder_kind(texture::TextureType::Tex2D, "objectNMap") == "flat normal map");
+    CHECK(texture::placeholder_kind(texture::TextureType::Tex2D, "NormalTexture") == "flat normal map");
+    CHECK(texture::placeholder_kind(texture::TextureType::Cube, "envMap") == "grey cube");
+}
+
+TEST_CASE("a missing Radiance texture's stand-in decodes as RGBE to its own grey") {
+    // scene_tonemap.fx of the NVIDIA library decodes an RGBE .hdr itself: the opaque checker's alpha
+    // 255 made exponent 127 (values near 1e38, a white screen); alpha 128 is exponent 0.
+    const texture::TextureData data = texture::placeholder_texture(texture::TextureType::Tex2D, "HDRTexture", "nvlobby_new.hdr");
+    CHECK(texture::placeholder_kind(texture::TextureType::Tex2D, "HDRTexture", "nvlobby_new.hdr") == "grey checker (RGBE-encoded)");
+    bool exponent_zero = true;
+    for (size_t i = 3; i < data.faces[0][0].bytes.size(); i += 4) exponent_zero = exponent_zero && data.faces[0][0].bytes[i] == 128;
+    CHECK(exponent_zero);
+    CHECK(texture::placeholder_texture(texture::TextureType::Tex2D, "HDRTexture", "lobby.png").faces[0][0].bytes[3] == 255);
 }

@@ -26,6 +26,8 @@ const char* cg_shims() {
             "#define fixed2x2 float2x2\n#define fixed3x3 float3x3\n#define fixed4x4 float4x4\n#define fixed3x4 float3x4\n"
             "#define fixed4x3 float4x3\n#define samplerRECT sampler2D\n#define texRECT tex2D\n#define texRECTproj tex2Dproj\n"
             "#define texRECTlod tex2Dlod\n#define FXVIEW 1\n"
+            // Cg's `varying` (per-vertex data, as every in/out of a program is in HLSL) has no HLSL keyword.
+            "#define varying\n"
             // glslang 12 makes lit()'s specular term n.h * m instead of pow(n.h, m): HLSL's definition here.
             "#define lit(nl, nh, m) float4(1.0, max((nl), 0.0), ((nl) < 0.0 || (nh) < 0.0) ? 0.0 : pow(max((nh), 0.0), (m)), 1.0)\n";
         // Cg's typed lookups: h4tex2D(s, uv) is tex2D(s, uv) as half4, f3texCUBE(...) its .xyz, ...

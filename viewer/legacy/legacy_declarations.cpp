@@ -166,7 +166,11 @@ bool LegacyParser::parse_variable(const Token& type, const Token& name, bool is_
         } else if (is_static) {
             parse_value({";", ","});  // a constant stays in the code as written
         } else {
+            const Token first = peek();
             global.default_value = parse_value({";", ","});
+            if (!global.default_value)
+                source_.warnings.push_back(at(first).str() + ": warning: the default of " + global.name +
+                                           " is an expression fxview does not evaluate (numbers, + - * / and constructors are); it starts at 0");
             blank(begin, last_end_);
         }
     }
@@ -174,7 +178,13 @@ bool LegacyParser::parse_variable(const Token& type, const Token& name, bool is_
         if (to_lower(a.name) == "texture" && a.value.is_string) global.texture = a.value.text;
     // DX9's untyped sampler: typed at the end, from its texture or from how the code samples it.
     if (sampler && global.type == "sampler" && !is_static) untyped_.push_back({type.begin, type.end, source_.globals.size()});
-    if (is_matrix_type(global.type)) matrices_.insert(global.name);
+    if (is_matrix_type(global.type)) {
+        matrices_.insert(global.name);
+        // A matrix bound transposed (WorldViewProjectionTranspose, not the normal matrices'
+        // InverseTranspose) multiplies the other way round: mul(v, Mᵀ) is mul(M, v).
+        const std::string semantic = to_lower(global.semantic);
+        if (semantic.size() > 9 && semantic.ends_with("transpose") && !semantic.ends_with("inversetranspose")) transposed_.insert(global.name);
+    }
     if (is_static) return true;
     if (source_.globals.size() >= kMaxGlobals) fail(name, "more than " + std::to_string(kMaxGlobals) + " parameters in one effect");
     if (to_lower(global.semantic) == "standardsglobal") {  // `float Script : STANDARDSGLOBAL` is no parameter
@@ -346,8 +356,9 @@ void LegacyParser::count_mul_uses(const Token& open) {
         }
         if (comma >= body.size() || !is(body[comma], ",")) continue;
         const bool first_matrix = is_matrix_argument(i + 2), second_matrix = is_matrix_argument(comma + 1);
-        if (first_matrix && !second_matrix) ++source_.column_vector_uses;
-        if (second_matrix && !first_matrix) ++source_.row_vector_uses;
+        const auto transposed = [&](size_t k) { return body[k].kind == TokenKind::Identifier && transposed_.count(body[k].text) > 0; };
+        if (first_matrix && !second_matrix) ++(transposed(i + 2) ? source_.row_vector_uses : source_.column_vector_uses);
+        if (second_matrix && !first_matrix) ++(transposed(comma + 1) ? source_.column_vector_uses : source_.row_vector_uses);
     }
 }
 

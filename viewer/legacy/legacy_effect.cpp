@@ -54,6 +54,32 @@ const FunctionSignature* find_function(const LegacySource& source, const Compile
     return first;
 }
 
+// DirectX's fixed-function vertex stage for a pass with `VertexShader = NULL` (the DirectX SDK's
+// post-processing samples): the position through WorldViewProjection (the uniform
+// fxview_fixed_function_wvp, supplied by the scene), and what the pixel program reads: texture
+// coordinates from the mesh's first set, colours white. Empty, with `error` set, where the pixel
+// program's inputs carry no semantics (a structure).
+std::string fixed_function_vertex(const FunctionSignature& fragment, bool row_vectors, std::string& error) {
+    std::string outputs, body;
+    for (const auto& p : fragment.parameters) {
+        if (p.uniform || p.output) continue;
+        const std::string semantic = to_lower(p.semantic);
+        if (semantic.empty()) {
+            error = "VertexShader = NULL: the pixel program's input " + p.name + " has no semantic (fxview's fixed-function stage writes TEXCOORDn and COLORn)";
+            return {};
+        }
+        if (semantic == "vpos" || semantic == "vface" || semantic.rfind("sv_", 0) == 0) continue;
+        const std::string name = "fxview_out_" + p.name;
+        outputs += ", out " + p.type + " " + name + " : " + p.semantic;
+        const std::string source = semantic.rfind("texcoord", 0) == 0 ? "fxview_uv" : semantic.rfind("color", 0) == 0 ? "float4(1, 1, 1, 1)" : "float4(0, 0, 0, 0)";
+        const int components = std::isdigit(static_cast<unsigned char>(p.type.back())) ? p.type.back() - '0' : 1;
+        body += name + " = (" + p.type + ")(" + source + ")" + std::string(".xyzw").substr(0, static_cast<size_t>(components) + 1) + "; ";
+    }
+    return "float4x4 fxview_fixed_function_wvp;\nvoid fxview_vertex_entry(float4 fxview_position : POSITION, float4 fxview_uv : TEXCOORD0, out float4 fxview_clip : SV_Position" +
+           outputs + ") { fxview_clip = " + (row_vectors ? "mul(fxview_position, fxview_fixed_function_wvp)" : "mul(fxview_fixed_function_wvp, fxview_position)") +
+           "; " + body + "}\n";
+}
+
 // Returns whether the pass's own script chose its render targets.
 bool add_pass(effect::Effect& effect, const LegacySource& source, effect::Technique& technique, const LegacyPass& legacy, int file_lines,
               SpirvCache& cache) {
@@ -80,9 +106,25 @@ bool add_pass(effect::Effect& effect, const LegacySource& source, effect::Techni
         const char* kind = statement.stage == ShaderStage::Vertex ? "vertex program " : statement.stage == ShaderStage::Fragment ? "fragment program " : "geometry program ";
         requests.push_back({statement.stage, source.code + "\n" + wrapper, entry, statement.where, kind + statement.function});
     }
-    const bool has_vertex = std::any_of(legacy.programs.begin(), legacy.programs.end(), [](const auto& s) { return s.stage == ShaderStage::Vertex; });
-    const bool has_fragment = std::any_of(legacy.programs.begin(), legacy.programs.end(), [](const auto& s) { return s.stage == ShaderStage::Fragment; });
-    if (!has_vertex || !has_fragment)
+    bool has_vertex = std::any_of(legacy.programs.begin(), legacy.programs.end(), [](const auto& s) { return s.stage == ShaderStage::Vertex; });
+    const auto fragment = std::find_if(legacy.programs.begin(), legacy.programs.end(), [](const auto& s) { return s.stage == ShaderStage::Fragment; });
+    if (!has_vertex && legacy.fixed_function_vertex && fragment != legacy.programs.end())
+        if (const FunctionSignature* function = find_function(source, *fragment)) {
+            std::string error;
+            const std::string stage = fixed_function_vertex(*function, effect.row_vectors, error);
+            if (!error.empty()) errors += legacy.where.str() + ": error: " + error + "\n";
+            requests.push_back({ShaderStage::Vertex, source.code + "\n" + stage, "fxview_vertex_entry", legacy.where, "fixed-function vertex stage"});
+            has_vertex = true;
+            if (!effect.find_parameter("fxview_fixed_function_wvp")) {
+                effect::Parameter wvp;
+                wvp.name = "fxview_fixed_function_wvp";
+                wvp.type = "mat4";
+                wvp.semantic = "WORLDVIEWPROJECTION";
+                wvp.where = legacy.where;
+                effect.parameters.push_back(std::move(wvp));
+            }
+        }
+    if (!has_vertex || fragment == legacy.programs.end())
         errors += legacy.where.str() + ": error: pass " + legacy.name + " needs a vertex and a fragment program (fixed-function passes are not supported)\n";
     TranslatedPass translated;
     if (errors.empty()) {

@@ -120,6 +120,28 @@ std::string scene_semantic(const LegacyGlobal& g) {
     return {};
 }
 
+// The semantic a matrix without one names by its name, as the application that drove a DirectX SDK
+// sample set it by name: g_mWorldViewProjection, matWorldViewProj, mWorld -> WorldViewProjection, ...
+std::string semantic_from_name(const LegacyGlobal& g) {
+    const std::string t = to_lower(g.type);
+    if (!g.semantic.empty() || !(t.ends_with("4x4") || t.ends_with("4x3") || t.ends_with("3x4"))) return {};
+    std::string name = g.name;
+    for (const char* prefix : {"g_m", "g_", "m_", "mat", "g", "m"}) {
+        const size_t n = std::string(prefix).size();
+        // A short prefix only before a capital (mWorld, gView), not the start of a word (model, matrix).
+        if (name.size() > n && name.compare(0, n, prefix) == 0 && (n > 2 || name[n] == '_' || std::isupper(static_cast<unsigned char>(name[n])))) {
+            name = name.substr(n);
+            break;
+        }
+    }
+    LegacyGlobal named = g;
+    named.semantic = name;
+    const std::string semantic = scene_semantic(named);
+    const bool matrix = semantic.find("WORLD") != std::string::npos || semantic.find("PROJECTION") != std::string::npos ||
+                        (semantic.find("VIEW") != std::string::npos && semantic.find("VIEWPORT") == std::string::npos);
+    return matrix ? semantic : std::string();
+}
+
 void add_parameter(effect::Effect& effect, const LegacyGlobal& g) {
     effect::Parameter p;
     p.name = g.name;
@@ -141,6 +163,11 @@ void add_parameter(effect::Effect& effect, const LegacyGlobal& g) {
         return;
     }
     p.semantic = scene_semantic(g);
+    if (const std::string named = semantic_from_name(g); !named.empty()) {
+        p.semantic = named;
+        effect.warnings.push_back(g.where.str() + ": warning: " + g.name + " has no semantic; fxview supplies it as " + named +
+                                  " by its name (as the application this effect was written for would)");
+    }
     if (!g.semantic.empty() && p.semantic.empty() && effect::component_count(p.type) == 16 && upper(g.semantic) != "NONE")
         effect.warnings.push_back(g.where.str() + ": warning: semantic " + excerpt(g.semantic) + " of " + g.name + " is not supplied by fxview; it keeps its default");
     p.ui = tolerant_ui_hints(g.annotations, effect.warnings);
@@ -157,6 +184,15 @@ void add_parameter(effect::Effect& effect, const LegacyGlobal& g) {
             effect::apply_texture_annotations(own, g.annotations);
             effect.textures.push_back(own);
             p.texture = own.name;
+        }
+        // The library's files name the texture object (UIName, UIHelp), not its sampler: the panel
+        // and `list` show the sampler, so it takes the texture's words where it has none of its own.
+        const auto texture = std::find_if(effect.textures.begin(), effect.textures.end(), [&](const auto& t) { return t.name == p.texture; });
+        if (texture != effect.textures.end() && (p.ui.label.empty() || p.ui.help.empty())) {
+            std::vector<std::string> said_already;  // the texture's own hints were read with the texture
+            const effect::UiHints words = tolerant_ui_hints(texture->annotations, said_already);
+            if (p.ui.label.empty()) p.ui.label = words.label;
+            if (p.ui.help.empty()) p.ui.help = words.help;
         }
         effect.parameters.push_back(std::move(p));
         return;

@@ -6,6 +6,8 @@
 #include "core/text.hpp"
 #include "effect/texture_annotations.hpp"
 #include "legacy/legacy_parser.hpp"
+
+#include "legacy/constant_value.hpp"
 #include "legacy/legacy_states.hpp"
 
 namespace fxview::legacy {
@@ -108,16 +110,12 @@ std::string LegacyParser::apply_edits() {
 
 // --- values and annotations ---------------------------------------------------------------
 std::optional<double> LegacyParser::number_of(const Token& token, bool negative) const {
-    std::string text = token.text;
-    while (!text.empty() && std::string("fFhHuUlL").find(text.back()) != std::string::npos) text.pop_back();
-    double value = 0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
-    return negative ? -value : value;
+    const std::optional<double> value = legacy_number(token.text);
+    return value && negative ? std::optional<double>(-*value) : value;
 }
 
-// A constant: 1.5, -2, true, "text" "more", {1, 2}, float3(1, 2, 3); nullopt (tokens consumed
-// up to `stop`) for an expression this reader does not evaluate.
+// A constant: 1.5, -2, true, "text" "more", {1, 2}, float3(1, 2, 3), 1.0 / 2.2 (constant_value.hpp);
+// nullopt (tokens consumed up to `stop`) for an expression that is no constant.
 std::optional<effect::Value> LegacyParser::parse_value(const std::set<std::string>& stops) {
     effect::Value value;
     Token t = peek();
@@ -126,32 +124,19 @@ std::optional<effect::Value> LegacyParser::parse_value(const std::set<std::strin
         while (peek().kind == TokenKind::String) value.text += next().text;
         return value;
     }
-    bool ok = true;
-    int depth = 0;
-    bool negative = false;
-    for (;;) {
+    std::vector<Token> tokens;
+    for (int depth = 0;;) {
         t = peek();
         if (t.kind == TokenKind::End) fail(t, "value never ends");
         if (depth == 0 && t.kind == TokenKind::Punct && stops.count(t.text)) break;
         next();
-        if (is(t, "{") || is(t, "(")) { ++depth; continue; }
-        if (is(t, "}") || is(t, ")")) { --depth; continue; }
-        if (is(t, ",")) continue;
-        if (is(t, "-")) { negative = !negative; continue; }
-        if (is(t, "+")) continue;
-        if (t.kind == TokenKind::Number) {
-            if (const auto v = number_of(t, negative)) value.numbers.push_back(*v);
-            else ok = false;
-        } else if (t.kind == TokenKind::Identifier && (t.text == "true" || t.text == "false")) {
-            value.numbers.push_back(t.text == "true" ? 1.0 : 0.0);
-        } else if (t.kind == TokenKind::Identifier && is(peek(), "(")) {
-            // a constructor such as float3( ... ): its numbers follow
-        } else {
-            ok = false;
-        }
-        negative = false;
+        if (is(t, "{") || is(t, "(")) ++depth;
+        if (is(t, "}") || is(t, ")")) --depth;
+        tokens.push_back(t);
     }
-    if (!ok || value.numbers.empty()) return std::nullopt;
+    const std::optional<std::vector<double>> numbers = constant_numbers(tokens);
+    if (!numbers || numbers->empty()) return std::nullopt;
+    value.numbers = *numbers;
     return value;
 }
 
@@ -216,6 +201,12 @@ LegacyPass LegacyParser::parse_pass(const LegacyTechnique& technique) {
         const bool vertex = key == "vertexshader" || key == "vertexprogram";
         const bool fragment = key == "pixelshader" || key == "fragmentprogram" || key == "fragmentshader";
         const bool geometry = key == "geometryshader" || key == "geometryprogram";
+        if (vertex && (is(peek(), "NULL") || is(peek(), "null"))) {  // the fixed-function vertex stage (legacy_effect.cpp)
+            next();
+            expect(";", "after " + state.text + " = NULL");
+            pass.fixed_function_vertex = true;
+            continue;
+        }
         if (vertex || fragment || geometry) {
             pass.programs.push_back(parse_compile(state, vertex ? effect::ShaderStage::Vertex
                                                          : fragment ? effect::ShaderStage::Fragment

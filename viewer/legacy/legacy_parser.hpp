@@ -149,6 +149,7 @@ private:
     };
     std::vector<Untyped> untyped_;
     std::set<std::string> matrices_;  // matrix-typed globals and parameters (for mul() counting)
+    std::set<std::string> transposed_;  // those of them bound to a ...Transpose semantic
     std::set<std::string> warned_;    // state names already warned about
     LegacySource source_;
 };

@@ -41,6 +41,7 @@ struct LegacyPass {
     std::string name;
     effect::SourceLocation where;
     std::vector<CompileStatement> programs;
+    bool fixed_function_vertex = false;  // VertexShader = NULL: DirectX's fixed-function vertex stage
     effect::RenderStates states;
     std::vector<effect::Annotation> annotations;
 };

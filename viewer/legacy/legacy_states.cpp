@@ -121,7 +121,10 @@ void set_legacy_render_state(effect::RenderStates& states, const std::string& na
     const std::string key = to_lower(name);
     const effect::StateValue value = state_value(tokens);
     if (kFixedFunction.count(key)) {
-        warn_once(name, "render state " + name + " has no equivalent in OpenGL core and is ignored", where, warnings, warned);
+        warn_once(name,
+                  key == "frontface" ? "render state " + name + " is not supported: front faces stay counter-clockwise (fxview's meshes wind them so)"
+                                     : "render state " + name + " has no equivalent in OpenGL core and is ignored",
+                  where, warnings, warned);
         return;
     }
     bool ok = true;

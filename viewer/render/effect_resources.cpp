@@ -169,12 +169,13 @@ std::string resolve_legacy_texture_path(const std::string& file, const std::stri
 }
 
 void EffectResources::add_placeholder(const effect::TextureResource& resource, const std::string& problem) {
-    TextureData data = texture::placeholder_texture(resource.type, resource.name);
+    const std::string file = resource.files.empty() ? std::string() : resource.files.front();
+    TextureData data = texture::placeholder_texture(resource.type, resource.name, file);
     std::string sampler = resource.name;  // what --set takes: a sampler reading the texture
     for (const auto& p : effect_.parameters)
         if (effect::is_sampler_type(p.type) && p.texture == resource.name) sampler = p.name;
     warnings_.push_back(resource.where.str() + ": warning: texture " + resource.name + " " + excerpt(problem, 300) + "; showing a " +
-                        texture::placeholder_kind(resource.type, resource.name) + " instead (replace it with --set " + sampler + "=FILE)");
+                        texture::placeholder_kind(resource.type, resource.name, file) + " instead (replace it with --set " + sampler + "=FILE)");
     add_texture(resource.name, std::move(data), false);
 }
 

@@ -13,6 +13,16 @@ bool has(const std::string& name, const char* word) {
     return lower.find(word) != std::string::npos;
 }
 
+// `word` starting a word of `name`: at its start, after a non-letter or as a capital (camelCase), so
+// that "nmap" is found in nmapTex, bump_nmap and objectNMap but not in XToonMap.
+bool has_word(const std::string& name, const char* word) {
+    std::string lower = name;
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (size_t at = lower.find(word); at != std::string::npos; at = lower.find(word, at + 1))
+        if (at == 0 || !std::isalpha(static_cast<unsigned char>(name[at - 1])) || std::isupper(static_cast<unsigned char>(name[at]))) return true;
+    return false;
+}
+
 Level level(int width, int height, int depth) {
     Level l;
     l.width = width;
@@ -29,17 +39,26 @@ void put(Level& l, int x, int y, int z, std::uint8_t r, std::uint8_t g, std::uin
     l.bytes[i + 2] = b;
 }
 
+bool is_rgbe_file(const std::string& file) {
+    std::string lower = file;
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return lower.ends_with(".hdr") || lower.ends_with(".rgbe");
+}
+
 }  // namespace
 
-std::string placeholder_kind(TextureType type, const std::string& name) {
+std::string placeholder_kind(TextureType type, const std::string& name, const std::string& file) {
+    if (is_rgbe_file(file)) return std::string(type == TextureType::Cube ? "grey cube" : "grey checker") + " (RGBE-encoded)";
     if (type == TextureType::Cube) return "grey cube";
     if (type == TextureType::Tex3D) return "3D noise";
     if (type == TextureType::Tex1D) return "grey ramp";
-    if (has(name, "norm") || has(name, "bump") || has(name, "nmap")) return "flat normal map";
+    if (has(name, "norm") || has(name, "bump") || has_word(name, "nmap")) return "flat normal map";
     return "grey checker";
 }
 
-TextureData placeholder_texture(TextureType type, const std::string& name) {
+namespace {
+
+TextureData placeholder_by_name(TextureType type, const std::string& name) {
     TextureData data;
     data.type = type;
     data.format = PixelFormat::RGBA8;
@@ -85,6 +104,18 @@ TextureData placeholder_texture(TextureType type, const std::string& name) {
             }
         }
     data.faces.push_back({l});
+    return data;
+}
+
+}  // namespace
+
+TextureData placeholder_texture(TextureType type, const std::string& name, const std::string& file) {
+    TextureData data = placeholder_by_name(type, is_rgbe_file(file) ? std::string() : name);
+    if (!is_rgbe_file(file)) return data;
+    for (auto& face : data.faces)
+        for (Level& l : face)
+            for (size_t i = 3; i < l.bytes.size(); i += 4) l.bytes[i] = 128;
+    data.source = "placeholder (" + placeholder_kind(type, name, file) + ")";
     return data;
 }
 
