@@ -47,3 +47,8 @@ for effect in tests/effects/legacy/*.fx tests/effects/legacy/*.cgfx effects/lega
   "$fxview" render "$effect" --mesh sphere --size 128x128 --out "$out/legacy-$(basename "$effect").png" 2>/dev/null || true
 done
 "$fxview" compare effects/legacy/wavelength.cgfx --sweep --size 24x24 | tail -3 | tee "$out/compare-legacy-thesis.txt" || true
+"$fxview" compare effects/legacy/thinfilm.cgfx -t Fresnel --size 96x96 | tail -1 | tee -a "$out/compare-legacy-thesis.txt" || true
+# Issue #28: a .brdf's own importance sampling (isFunc) through the NVIDIA driver, and PBR's sampled
+# specular lobe against the CPU split sum and the ground truth.
+"$fxview" brdf-check tests/effects/brdf/explorer/is_func_sampler.brdf --phi-i 0 --json | tee "$out/brdf-check-isfunc.json" || true
+"$fxview" compare effects/brdf/analytic.fx -t PBR --preset effects/brdf/presets/gold.json --environment studio --ground-truth --size 64x64 --json | tee "$out/compare-pbr-lobe.jsonl" || true
