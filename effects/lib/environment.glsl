@@ -22,11 +22,11 @@ vec3 environment_facing_normal(vec3 n, vec3 v) {
 }
 
 // The map's radiance towards `world_direction` (without the disc lights), blurred by a GGX lobe of
-// `roughness` (prefiltered levels k / (levels - 1), linear between two).
+// `roughness` (prefiltered level k for roughness (k / (levels - 1))², linear between two).
 vec3 environment_radiance(vec3 world_direction, float roughness) {
     vec3 d = FxEnvironmentRotation * world_direction;
     float last = float(textureQueryLevels(FxEnvironmentSpecular) - 1);
-    float lod = clamp(roughness, 0.0, 1.0) * last;
+    float lod = sqrt(clamp(roughness, 0.0, 1.0)) * last;
     float l0 = floor(lod);
     vec3 a = textureLod(FxEnvironmentSpecular, d, l0).rgb;
     vec3 b = textureLod(FxEnvironmentSpecular, d, min(l0 + 1.0, last)).rgb;

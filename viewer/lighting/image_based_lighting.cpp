@@ -61,6 +61,13 @@ glm::dvec3 sample_ggx(double u1, double u2, double alpha) {
 
 double ggx_d(double nh, double alpha) { return brdf::ggx_distribution(nh, alpha); }
 
+double prefiltered_roughness(int level, int levels) {
+    const double t = static_cast<double>(level) / (levels - 1);
+    return t * t;
+}
+
+double prefiltered_lod(double roughness, int levels) { return std::sqrt(std::clamp(roughness, 0.0, 1.0)) * (levels - 1); }
+
 PrefilteredEnvironment prefilter(const Environment& environment, int levels, int samples) {
     PrefilteredEnvironment out;
     const FloatCube& radiance = environment.radiance;
@@ -69,7 +76,7 @@ PrefilteredEnvironment prefilter(const Environment& environment, int levels, int
     out.specular.push_back(radiance);
     const double texel_angle = 4.0 * kPi / (6.0 * radiance.size * radiance.size);
     for (int level = 1; level < levels; ++level) {
-        const double roughness = static_cast<double>(level) / (levels - 1), alpha = roughness * roughness;
+        const double roughness = prefiltered_roughness(level, levels), alpha = roughness * roughness;
         FloatCube cube(std::max(1, radiance.size >> level));
         // The narrowest lobe needs few directions; wider ones many, or a bright small region (a window
         // left in the map) shows as blotches where the same directions of neighbouring texels catch it.

@@ -21,12 +21,18 @@
 namespace fxview::lighting {
 
 struct PrefilteredEnvironment {
-    std::vector<FloatCube> specular;      // level k for roughness k / (levels - 1), without the discs
+    std::vector<FloatCube> specular;      // level k for prefiltered_roughness(k, levels), without the discs
     std::array<glm::vec3, 9> irradiance;  // SH coefficients of E(n) / pi, the cosine-convolved radiance (without the discs)
     // The discs' irradiance in closed form (order-2 SH would ring badly about a low sun): E(n)/pi adds
     // max(n·direction, 0) times this for each, from their centre direction.
     std::vector<std::pair<glm::vec3, glm::vec3>> disc_irradiance;  // direction, radiance x solid angle / pi
 };
+
+// The roughness of prefiltered level k of `levels`: (k / (levels - 1))², so that the sharp lobes,
+// whose edges show, get most levels (0, 0.04, 0.16, 0.36, 0.64, 1 for six); and the fractional
+// level (mip LOD) for a roughness, between which two levels are mixed linearly.
+double prefiltered_roughness(int level, int levels);
+double prefiltered_lod(double roughness, int levels);
 
 // `samples` GGX directions per texel of level 1, four times as many on wider lobes (level 0 is the
 // radiance). The discs are in none of the levels: shading adds them in closed form (disc_lighting.hpp),

@@ -22,7 +22,7 @@ std::optional<EnvironmentLookup> EnvironmentLookup::from(const ReferenceContext&
 glm::dvec3 EnvironmentLookup::radiance(const glm::dvec3& world, double roughness, double* seam) const {
     const glm::dvec3 d = rotation_ * world;
     const int last = maps_->specular_data().levels() - 1;
-    const double lod = std::clamp(roughness, 0.0, 1.0) * last;
+    const double lod = lighting::prefiltered_lod(roughness, last + 1);
     const int l0 = static_cast<int>(std::floor(lod)), l1 = std::min(l0 + 1, last);
     effect::SamplerState linear;
     linear.min_filter = linear.mag_filter = GL_LINEAR;

@@ -25,7 +25,7 @@ namespace fxview::render {
 class EnvironmentMaps {
 public:
     static constexpr int kSize = 256;    // texels across a face of the radiance (level 0)
-    static constexpr int kLevels = 6;    // roughness 0, 0.2, ..., 1 on levels 256 .. 8
+    static constexpr int kLevels = 7;    // roughness (k/6)²: 0, 0.03, 0.11, 0.25, 0.44, 0.69, 1 on levels 256 .. 4
     static constexpr int kDfgSize = 64;
     static constexpr int kMaxDiscs = 4;  // as many as lighting::BrightSourceRules takes out of an image
 
