@@ -910,3 +910,19 @@ TEST_CASE("brdf-plot writes every view at the asked size, and its CSV holds the 
     // Nearest-bin lookups (MERL's own reader) step in θh and θd: measured within 1e-4 up to 87°, 1.2 % low at 89°.
     while (std::getline(albedo, line)) CHECK(std::stod(line.substr(line.find("(measured),") + 11)) == doctest::Approx(0.5).epsilon(0.015));
 }
+
+TEST_CASE("a preset without an effect on the command line renders the preset's effect, never the debug view silently") {
+    // An outside check: `render --preset gold.json` drew the debug normals and exited 0.
+    const std::string preset = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/presets/gold.json";
+    const std::string effect = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/brdf/analytic.fx";
+    const Result alone = run("pick --preset " + preset + " --size 32x32 --at 16,16 --json");
+    const Result named = run("pick " + effect + " --preset " + preset + " --size 32x32 --at 16,16 --json");
+    REQUIRE(alone.exit_code == 0);
+    REQUIRE(named.exit_code == 0);
+    CHECK(nlohmann::json::parse(alone.out)["rgba"] == nlohmann::json::parse(named.out)["rgba"]);
+    const std::string missing = temp_path("preset-missing-effect.json");
+    std::ofstream(missing) << "{\n  \"effect\": \"nowhere.fx\"\n}\n";
+    const Result bad = run("render --preset " + missing + " --size 8x8 --out " + temp_path("never.png"));
+    CHECK(bad.exit_code == 1);
+    CHECK(bad.err.find("preset-missing-effect.json:2: the preset's effect 'nowhere.fx' is not found") != std::string::npos);
+}

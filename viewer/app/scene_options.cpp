@@ -3,8 +3,10 @@
 #include <cmath>
 #include <filesystem>
 
+#include "app/effect_options.hpp"
 #include "app/value_parsing.hpp"
 #include "core/error.hpp"
+#include "core/text.hpp"
 #include "effect/preset.hpp"
 #include "math/transform.hpp"
 
@@ -108,6 +110,17 @@ RenderRequest to_render_request(const SceneOptions& o) {
     }
     if (scene.environment.source.size() > kMaxEnvironmentSourceChars) throw UsageError("--environment: longer than any list of six file names");
     request.effect = o.effect;
+    // A preset names its effect: without one on the command line, that one (as written, next to the
+    // preset, or in fxview's own folder, where the shipped presets' effects/... live), never the
+    // debug view instead.
+    if (request.effect.path.empty() && !preset.effect.empty()) {
+        std::error_code error;
+        for (const std::filesystem::path& candidate : {std::filesystem::path(preset.effect), std::filesystem::path(preset.path).parent_path() / preset.effect,
+                                                       std::filesystem::path(spectra_folder()).parent_path() / preset.effect})
+            if (request.effect.path.empty() && std::filesystem::is_regular_file(candidate, error)) request.effect.path = candidate.string();
+        if (request.effect.path.empty())
+            throw Error(preset.where("effect") + "the preset's effect '" + excerpt(preset.effect) + "' is not found (name the effect file before --preset)");
+    }
     return request;
 }
 

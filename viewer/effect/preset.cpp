@@ -99,6 +99,11 @@ PresetScene load_preset_scene(const std::string& path, const ResourceLimits& lim
     const nlohmann::json json = read_preset_json(path, limits, text);
     PresetScene scene;
     scene.path = path;
+    if (json.is_object() && json.contains("effect") && json["effect"].is_string()) {
+        scene.effect = json["effect"].get<std::string>();
+        const std::string where = line_of(path, text, "effect");
+        scene.lines["effect"] = std::stoi(where.substr(path.size() + 1));
+    }
     if (!json.is_object() || !json.contains("scene")) return scene;
     const nlohmann::json& s = json["scene"];
     if (!s.is_object()) throw Error(line_of(path, text, "scene") + "\"scene\" must be an object");

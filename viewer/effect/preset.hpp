@@ -31,6 +31,7 @@ struct PresetScene {
     std::optional<std::string> environment, tone_map;
     std::optional<float> environment_rotate, environment_intensity, exposure, light_radius;
     std::optional<int> samples;
+    std::string effect;  // the preset's "effect", as written ("" if none)
     std::string path;
     std::map<std::string, int> lines;  // the line of each key, for messages about its value
     std::string where(const std::string& key) const;  // "PATH:LINE: "
