@@ -23,6 +23,11 @@ for effect in spectral/wavelength spectral/thinfilm spectral/cd brdf/analytic br
 done
 # Issue #14: the Fourier films' speed-up over the 1 nm loop, measured in one run.
 "$fxview" bench effects/spectral/thinfilm.fx --techniques FresnelExact,FresnelFourier,Bubble,BubbleFourier --frames 10 | tee "$out/bench-fourier.md"
+# Issue #25 item 7: the Fourier films under the sky (the sky's own tables) against their point-light time.
+"$fxview" bench effects/spectral/thinfilm.fx --techniques FresnelFourier,BubbleFourier --frames 10 --environment sky:35 | tee "$out/bench-fourier-sky.md"
+for t in FresnelFourier BubbleFourier; do
+  "$fxview" compare effects/spectral/thinfilm.fx -t "$t" --environment sky:35 --size 96x96 --json | tee -a "$out/compare-fourier-sky.jsonl" || true
+done
 # Issue #15: the BRDF grid on the NVIDIA driver (brdf-check figures, the grid against its CPU reference).
 "$fxview" brdf-check tests/effects/brdf/ggx_single_scattering.brdf --set alpha=1 --json | tee "$out/brdf-check-ggx.json" || true
 "$fxview" compare effects/brdf/analytic.fx --technique BrdfGrid --size 256x256 --json | tee "$out/compare-brdf-grid.jsonl" || true

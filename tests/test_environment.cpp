@@ -538,3 +538,31 @@ TEST_CASE("the built-in sky's spectral form is its RGB radiance: Σ w_k S_k thro
                 }
     }
 }
+
+TEST_CASE("Fourier films under the sky: the series of the sky's three spectra matches the exact sum and the CPU reference") {
+    const std::string thinfilm = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/thinfilm.fx";
+    const std::string scene = " --environment sky:35 --size 32x32 --set Thickness=300 --set Variation=700 --set Brightness=0.5";
+    for (const auto& [fourier, exact] : {std::pair{"FresnelFourier", "FresnelExact"}, std::pair{"BubbleFourier", "Bubble"}}) {
+        CAPTURE(fourier);
+        const Result compare = run("compare " + thinfilm + " -t " + fourier + scene);
+        CHECK(compare.exit_code == 0);
+        // Against Airy's sum over every nm under the same sky, a method without the series: the rule
+        // stops once what is left is below 1e-3 of the light (kSeriesTailLimit), so 2e-3 of the
+        // brightest pixel bounds the difference with float rounding to spare.
+        const std::string a = temp_path(std::string(fourier) + "-sky.pfm"), b = temp_path(std::string(exact) + "-sky.pfm");
+        REQUIRE(run("render " + thinfilm + " -t " + fourier + scene + " --out " + a).exit_code == 0);
+        REQUIRE(run("render " + thinfilm + " -t " + exact + scene + " --set Steps=1 --set Lower=360 --set Upper=830 --out " + b).exit_code == 0);
+        const image::FloatImage series = image::read_float_image(a), sum = image::read_float_image(b);
+        double brightest = 0, worst = 0, lit = 0;
+        for (int y = 0; y < 32; ++y)
+            for (int x = 0; x < 32; ++x)
+                for (int c = 0; c < 3; ++c) {
+                    brightest = std::max<double>(brightest, sum.pixel(x, y)[c]);
+                    worst = std::max<double>(worst, std::abs(series.pixel(x, y)[c] - sum.pixel(x, y)[c]));
+                    lit += sum.pixel(x, y)[c] > 0.01;
+                }
+        CHECK(lit > 500);  // the film is seen, not the background alone
+        CHECK(brightest < 0.99);  // nothing clipped
+        CHECK(worst < 2e-3 * brightest);
+    }
+}

@@ -174,3 +174,47 @@ TEST_CASE("soap films by the Fourier rule lie within CIEDE2000 1 of the 1 nm tra
             CHECK(fallbacks < (std::string(light) == "F11" ? samples / 10 : samples / 20));
         }
 }
+
+// Under the sky the light is Σ_k w_k S_k over three spectra with tables of their own
+// (environment:fourier); the rule sums the weighted series. Checked against the 1 nm
+// transfer-matrix integral under the mixed spectrum itself, an independent method: three spectra
+// unlike each other (daylight, tungsten, a line spectrum) at unequal weights, soap films and
+// coatings at random angles; CIEDE2000 1 as in the acceptance case above.
+TEST_CASE("films under a weighted sum of three spectra follow the 1 nm integral of the mixed light") {
+    const Fixture& f = fixture();
+    std::vector<spectral::NamedSpectrum> three;
+    for (const char* name : {"D65", "A", "F11"}) three.push_back(f.spectra[static_cast<size_t>(f.library.index_of(name))]);
+    const spectral::PackedTexture table = spectral::fourier_table(three, f.cie1931, f.cie1964);
+    std::mt19937 random(20261206);
+    std::uniform_real_distribution<double> thickness(0.0, 1000.0), angle(0.0, 89.0);
+    for (const std::array<double, 3> weights : {std::array<double, 3>{0.7, 0.2, 0.5}, std::array<double, 3>{0.0, 1.3, 0.0}, std::array<double, 3>{2.0, 0.0, 0.05}}) {
+        spectral::Spectrum mixed;
+        for (int nm = 360; nm <= 830; ++nm)
+            for (size_t k = 0; k < 3; ++k) mixed[nm] += weights[k] * three[k].spectrum.at(nm);
+        const spectral::Vec3 exact_white = spectral::SensitivityTransform(f.cie1931, mixed).white();
+        const reference::TableLight light{0, 3, weights};
+        spectral::Vec3 table_white{};
+        for (size_t k = 0; k < 3; ++k)
+            for (size_t c = 0; c < 3; ++c) table_white[c] += weights[k] * spectral::fourier_lookup(table, 0, static_cast<int>(k), 0.0)[c].real();
+        double worst = 0;
+        int series_used = 0;
+        for (int i = 0; i < 100; ++i) {
+            const double index = i % 2 == 0 ? 1.33 : 2.0;
+            const reference::SingleFilm film{1.0, index, {1.5, 0.0}, thickness(random), std::cos(angle(random) * std::numbers::pi / 180)};
+            const auto series = reference::film_xyz_fourier_table(table, 0, light, film, {});
+            if (!series) continue;
+            ++series_used;
+            worst = std::max(worst, spectral::delta_e_2000(spectral::xyz_to_lab(*series, table_white),
+                                                           spectral::xyz_to_lab(reference::film_xyz_exact(f.cie1931, mixed, film), exact_white)));
+        }
+        CAPTURE(weights[0]);
+        CAPTURE(weights[1]);
+        CHECK(worst < 1.0);
+        CHECK(series_used > 80);  // the series, not the fallback, is what is tested
+    }
+    // A direction of the sky with no light: black, not a division by zero.
+    const auto black = reference::film_xyz_fourier_table(table, 0, reference::TableLight{0, 3, {0.0, 0.0, 0.0}}, reference::SingleFilm{}, {});
+    REQUIRE(black);
+    CHECK((*black)[0] == 0.0);
+    CHECK((*black)[1] == 0.0);
+}

@@ -426,17 +426,22 @@ const int kFourierSamples = 4096;
 const int kFourierRowsPerTable = 3;
 const float kSeriesTailLimit = 1e-3, kSeriesTermLimit = 1e-5;  // viewer/reference/film_fourier.hpp
 
+// Under the built-in sky the light is Σ_k w_k S_k(λ) (environment_spectral.glsl), and the series is
+// linear in the light: the sky's three spectra have tables of their own (environment:fourier, same
+// layout), and the film's colour is the weighted sum of the three series, with one set of coefficients.
+uniform sampler2D FilmSkyFourier < string ResourceName = "environment:fourier"; string Format = "32F"; string Filter = "nearest"; string Wrap = "clamp"; >;
+
 // F(D) = G(D) e^{i 2π D ν}: the stored envelope G, interpolated, times the carrier at the
 // sensitivity's mean frequency ν (per channel). 0 beyond the table: the incoherent limit.
-void sensitivity_at(int row, vec3 centre, float path, out vec3 re, out vec3 im) {
+void sensitivity_at(sampler2D table, int row, vec3 centre, float path, out vec3 re, out vec3 im) {
     float x = path / kFourierStep;
     re = vec3(0.0);
     im = vec3(0.0);
     if (x >= float(kFourierSamples - 1)) return;
     int i = int(x);
     float t = x - float(i);
-    vec3 envelope_re = mix(texelFetch(FilmFourier, ivec2(i, row), 0).rgb, texelFetch(FilmFourier, ivec2(i + 1, row), 0).rgb, t);
-    vec3 envelope_im = mix(texelFetch(FilmFourier, ivec2(i, row + 1), 0).rgb, texelFetch(FilmFourier, ivec2(i + 1, row + 1), 0).rgb, t);
+    vec3 envelope_re = mix(texelFetch(table, ivec2(i, row), 0).rgb, texelFetch(table, ivec2(i + 1, row), 0).rgb, t);
+    vec3 envelope_im = mix(texelFetch(table, ivec2(i, row + 1), 0).rgb, texelFetch(table, ivec2(i + 1, row + 1), 0).rgb, t);
     vec3 angle = kTwoPi * fract(path * centre);
     vec3 c = cos(angle), s = sin(angle);
     re = envelope_re * c - envelope_im * s;
@@ -445,10 +450,23 @@ void sensitivity_at(int row, vec3 centre, float path, out vec3 re, out vec3 im) 
 
 // The largest |F| (any channel) from this path difference on: row + 2 holds it from sample 1 on (the
 // last texel: the largest sampled past the table); from sample 0 on it is F(0) itself.
-float fourier_tail_bound(int row, float path) {
+float fourier_tail_bound(sampler2D table, int row, float path) {
     int i = int(min(path / kFourierStep, float(kFourierSamples - 1)));
-    vec3 tail = i == 0 ? texelFetch(FilmFourier, ivec2(0, row), 0).rgb : texelFetch(FilmFourier, ivec2(i, row + 2), 0).rgb;
+    vec3 tail = i == 0 ? texelFetch(table, ivec2(0, row), 0).rgb : texelFetch(table, ivec2(i, row + 2), 0).rgb;
     return max(tail.x, max(tail.y, tail.z));
+}
+
+// The light of a series: `count` consecutive tables of `table` from GL row `row` on, weighted.
+struct SeriesLight {
+    int row, count;
+    vec3 weights;
+};
+
+// The bound of the lights' |F| from this path difference on: Σ_k |w_k| (table k's bound).
+float light_tail_bound(sampler2D table, SeriesLight light, float path) {
+    float bound = 0.0;
+    for (int k = 0; k < light.count; ++k) bound += abs(light.weights[k]) * fourier_tail_bound(table, light.row + k * kFourierRowsPerTable, path);
+    return bound;
 }
 
 // The exact sum at every nm of the table's range, with its normalisation (1 / Σ ȳ): where no series exists.
@@ -471,8 +489,8 @@ vec3 exact_film_xyz(Film f, vec2 n2) {
     return xyz / ybar_sum;
 }
 
-// The series' XYZ (before Brightness); false where it does not serve (see above).
-bool fourier_film_xyz(Film f, vec2 n2, out vec3 xyz) {
+// The series' XYZ (before Brightness) under `light`'s tables; false where it does not serve (see above).
+bool fourier_film_xyz(Film f, vec2 n2, sampler2D table, SeriesLight light, out vec3 xyz) {
     xyz = vec3(0.0);
     float ratio = OuterIndex / FilmIndex;
     float cos1_squared = (1.0 - ratio * ratio) + ratio * ratio * f.cos0 * f.cos0;  // as refracted_cos
@@ -492,21 +510,21 @@ bool fourier_film_xyz(Film f, vec2 n2, out vec3 xyz) {
     float c0 = weight.x * (r01.s.x * r01.s.x + tail_s) + weight.y * (r01.p.x * r01.p.x + tail_p);
     float decay_s = length(x_s) < 1.0 ? 1.0 / (1.0 - length(x_s)) : 0.0, decay_p = length(x_p) < 1.0 ? 1.0 / (1.0 - length(x_p)) : 0.0;
 
-    int row = kFourierRowsPerTable * (Observer * (textureSize(FilmFourier, 0).y / (2 * kFourierRowsPerTable)) + LightSpectrum);
-    vec3 white = texelFetch(FilmFourier, ivec2(0, row), 0).rgb;  // F(0), real
-    vec3 centre = texelFetch(FilmFourier, ivec2(0, row + 2), 0).rgb;
+    vec3 white = vec3(0.0);  // F(0) of the light, real
+    for (int k = 0; k < light.count; ++k) white += light.weights[k] * texelFetch(table, ivec2(0, light.row + k * kFourierRowsPerTable), 0).rgb;
     float brightest = max(white.x, max(white.y, white.z));
+    if (!(brightest > 0.0)) return true;  // no light (a black direction of the sky): black
     float path = 2.0 * FilmIndex * f.thickness * cos1;
     // What SeriesOrder terms leave out, relative to the light, is at most
     // 2 |C_{order+1}| / (1 − |x|) · (the largest |F| from (order+1) D on). Past kSeriesTailLimit (thin
     // films near grazing incidence, |x| -> 1) the exact sum serves instead.
     float left = 2.0 * (length(c_s) * pow(length(x_s), float(SeriesOrder)) * decay_s + length(c_p) * pow(length(x_p), float(SeriesOrder)) * decay_p)
-                 * fourier_tail_bound(row, float(SeriesOrder + 1) * path) / brightest;
+                 * light_tail_bound(table, light, float(SeriesOrder + 1) * path) / brightest;
     if (!(left <= kSeriesTailLimit)) return false;
 
     xyz = c0 * white;
     for (int m = 1; m <= SeriesOrder; ++m) {
-        float rest = 2.0 * (length(c_s) * decay_s + length(c_p) * decay_p) * fourier_tail_bound(row, float(m) * path) / brightest;
+        float rest = 2.0 * (length(c_s) * decay_s + length(c_p) * decay_p) * light_tail_bound(table, light, float(m) * path) / brightest;
         if (rest < kSeriesTermLimit) break;
         // The table has no F past its end (a line spectrum's comb returns there): drop the rest where
         // it adds little, else the exact sum.
@@ -514,10 +532,13 @@ bool fourier_film_xyz(Film f, vec2 n2, out vec3 xyz) {
             if (rest > kSeriesTailLimit) return false;
             break;
         }
-        vec3 re, im;
-        sensitivity_at(row, centre, float(m) * path, re, im);
         vec2 c = c_s + c_p;
-        xyz += 2.0 * (c.x * re - c.y * im);
+        for (int k = 0; k < light.count; ++k) {
+            int row = light.row + k * kFourierRowsPerTable;
+            vec3 re, im;
+            sensitivity_at(table, row, texelFetch(table, ivec2(0, row + 2), 0).rgb, float(m) * path, re, im);
+            xyz += light.weights[k] * 2.0 * (c.x * re - c.y * im);
+        }
         c_s = c_mul(c_s, x_s);
         c_p = c_mul(c_p, x_p);
     }
@@ -527,8 +548,15 @@ bool fourier_film_xyz(Film f, vec2 n2, out vec3 xyz) {
 // One call of the exact sum (a second inlined copy of its loop costs llvmpipe dearly).
 vec4 fourier_film_colour(Film f, vec2 n2) {
     vec3 xyz;
-    // Under the sky the light is no spectrum of the table: the exact sum.
-    if (film_under_sky || !fourier_film_xyz(f, n2, xyz)) xyz = exact_film_xyz(f, n2);
+    bool series;
+    if (film_under_sky) {
+        // The sky's three tables: observer · 3 + k.
+        series = fourier_film_xyz(f, n2, FilmSkyFourier, SeriesLight(kFourierRowsPerTable * 3 * Observer, 3, film_sky_weights), xyz);
+    } else {
+        int row = kFourierRowsPerTable * (Observer * (textureSize(FilmFourier, 0).y / (2 * kFourierRowsPerTable)) + LightSpectrum);
+        series = fourier_film_xyz(f, n2, FilmFourier, SeriesLight(row, 1, vec3(1.0, 0.0, 0.0)), xyz);
+    }
+    if (!series) xyz = exact_film_xyz(f, n2);
     return vec4(xyz_to_srgb(xyz * Brightness), 1.0);
 }
 

@@ -31,6 +31,8 @@ public:
     bool spectral() const { return maps_->has_spectral_form(); }
     glm::dvec3 spectral_weights(const glm::dvec3& d, double* seam = nullptr) const;
     double spectral_radiance(const glm::dvec3& weights, int nm) const;
+    // The thin-film transforms of its three spectra (environment:fourier); null without a spectral form.
+    const spectral::PackedTexture* spectral_fourier() const { return maps_->spectral_fourier(); }
     // The ground truth of ∫ L(l) f(l) (n·l) dl over the unfiltered environment: Monte Carlo with
     // `samples` directions (half cosine-, half GGX-distributed for `alpha` around n, combined by the
     // balance heuristic; a Hammersley set turned per pixel by `seed`) plus each disc light (the sun)

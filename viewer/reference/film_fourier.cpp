@@ -25,6 +25,11 @@ spectral::Vec3 film_xyz_fourier(const spectral::SensitivityTransform& transform,
 
 std::optional<spectral::Vec3> film_xyz_fourier_table(const spectral::PackedTexture& table, int observer_row, int light,
                                                      const SingleFilm& film, const SeriesTechnique& technique) {
+    return film_xyz_fourier_table(table, observer_row, TableLight{light, 1, {1.0, 0.0, 0.0}}, film, technique);
+}
+
+std::optional<spectral::Vec3> film_xyz_fourier_table(const spectral::PackedTexture& table, int observer_row, const TableLight& light,
+                                                     const SingleFilm& film, const SeriesTechnique& technique) {
     const double ratio = film.outer / film.index;
     if ((1.0 - ratio * ratio) + ratio * ratio * film.cos_outer * film.cos_outer <= 0.0) return std::nullopt;
     const int order = std::max(technique.order, 1);
@@ -37,8 +42,23 @@ std::optional<spectral::Vec3> film_xyz_fourier_table(const spectral::PackedTextu
         return std::pair{technique.weight_s * s.c[static_cast<size_t>(m)], technique.weight_p * p.c[static_cast<size_t>(m)]};
     };
     const double path = 2.0 * film.index * film.thickness_nm * s.cos_film;
-    const spectral::ComplexXyz white = spectral::fourier_lookup(table, observer_row, light, 0.0);
+    const auto lookup = [&](double path_difference) {
+        spectral::ComplexXyz sum{};
+        for (int k = 0; k < light.count; ++k) {
+            const spectral::ComplexXyz f = spectral::fourier_lookup(table, observer_row, light.first + k, path_difference);
+            for (size_t i = 0; i < 3; ++i) sum[i] += light.weights[static_cast<size_t>(k)] * f[i];
+        }
+        return sum;
+    };
+    const auto tail_bound = [&](double path_difference) {
+        double bound = 0;
+        for (int k = 0; k < light.count; ++k)
+            bound += std::abs(light.weights[static_cast<size_t>(k)]) * spectral::fourier_tail_bound(table, observer_row, light.first + k, path_difference);
+        return bound;
+    };
+    const spectral::ComplexXyz white = lookup(0.0);
     const double brightest = std::max({white[0].real(), white[1].real(), white[2].real()});
+    if (!(brightest > 0.0)) return spectral::Vec3{};
     // What terms m, m+1, ... can add at most, relative to the light: 2 Σ_{k >= m} |C_k| max|F(k D)|
     // <= 2 |C_m| / (1 − |x|) · (the largest |F| from m D on).
     const auto left_from = [&](int m) {
@@ -46,7 +66,7 @@ std::optional<spectral::Vec3> film_xyz_fourier_table(const spectral::PackedTextu
         const bool beyond = m > order;  // C_{order+1} = C_order x
         const double scale_s = beyond ? std::abs(s.ratio) : 1.0, scale_p = beyond ? std::abs(p.ratio) : 1.0;
         return 2.0 * (std::abs(c_s) * scale_s * decay_s + std::abs(c_p) * scale_p * decay_p) *
-               spectral::fourier_tail_bound(table, observer_row, light, m * path) / brightest;
+               tail_bound(m * path) / brightest;
     };
     if (!(left_from(order + 1) <= kSeriesTailLimit)) return std::nullopt;
     spectral::Vec3 xyz{};
@@ -61,7 +81,7 @@ std::optional<spectral::Vec3> film_xyz_fourier_table(const spectral::PackedTextu
             break;
         }
         const auto [c_s, c_p] = coefficient(m);
-        const spectral::ComplexXyz transform = spectral::fourier_lookup(table, observer_row, light, m * path);
+        const spectral::ComplexXyz transform = lookup(m * path);
         for (size_t i = 0; i < 3; ++i) xyz[i] += 2.0 * ((c_s + c_p) * transform[i]).real();
     }
     return xyz;

@@ -3,6 +3,7 @@
 // error study (`fxview spectra film-error`, docs/thin-films.md) compares. XYZ relative to the light
 // (a perfect reflector has Y = 1), unpolarised (the mean of s and p).
 #pragma once
+#include <array>
 #include <optional>
 
 #include "optics/fresnel.hpp"
@@ -32,6 +33,16 @@ struct SeriesTechnique {
 };
 constexpr double kSeriesTailLimit = 1e-3, kSeriesTermLimit = 1e-5;
 std::optional<spectral::Vec3> film_xyz_fourier_table(const spectral::PackedTexture& table, int observer_row, int light,
+                                                     const SingleFilm& film, const SeriesTechnique& technique);
+// The same under a light Σ_k w_k S_k of the table's spectra first .. first + count − 1 (the sky's
+// spectral form, environment:fourier): the series is linear in the light, so each term sums the
+// weighted transforms; the stopping rule bounds the rest by Σ_k |w_k| (spectrum k's bound) relative
+// to the combined light's largest channel. A light with no luminance in any channel gives black.
+struct TableLight {
+    int first = 0, count = 1;
+    std::array<double, 3> weights{1.0, 0.0, 0.0};
+};
+std::optional<spectral::Vec3> film_xyz_fourier_table(const spectral::PackedTexture& table, int observer_row, const TableLight& light,
                                                      const SingleFilm& film, const SeriesTechnique& technique);
 spectral::Vec3 film_xyz_exact(const spectral::Observer& observer, const spectral::Spectrum& light, const SingleFilm& film,
                               const spectral::Integration& range = {});

@@ -229,8 +229,11 @@ std::array<double, 4> fourier_colour(const Film& f, const ReferenceContext& c, o
     technique.weight_s = polarisation == 2 ? 0.0 : polarisation == 1 ? 1.0 : 0.5;
     technique.weight_p = polarisation == 1 ? 0.0 : 1.0 - technique.weight_s;
     const reference::SingleFilm film{f.n0, f.n1, substrate, f.thickness, f.cos0};
-    // Under the sky the light is no spectrum of the table: the exact sum, as on the GPU.
-    if (const auto series = f.sky ? std::nullopt : film_xyz_fourier_table(c.generated("FilmFourier"), setup.observer, light, film, technique)) {
+    // Under the sky: the weighted series of its three spectra (environment:fourier), as on the GPU.
+    const auto series = f.sky ? film_xyz_fourier_table(*f.environment->spectral_fourier(), setup.observer,
+                                                       TableLight{0, 3, {f.sky->x, f.sky->y, f.sky->z}}, film, technique)
+                              : film_xyz_fourier_table(c.generated("FilmFourier"), setup.observer, light, film, technique);
+    if (series) {
         spectral::Vec3 xyz = *series;
         for (double& v : xyz) v *= setup.brightness;
         return to_rgba(xyz, setup.mapping);

@@ -5,6 +5,8 @@
 #include "core/error.hpp"
 #include "gl/texture_upload.hpp"
 #include "lighting/environment_sources.hpp"
+#include "spectral/colorimetry.hpp"
+#include "spectral/fourier_table.hpp"
 
 namespace fxview::render {
 namespace {
@@ -44,7 +46,7 @@ bool EnvironmentMaps::is_resource_name(const std::string& name) {
 }
 
 bool EnvironmentMaps::is_spectral_resource_name(const std::string& name) {
-    return name == "environment:spectral-weights" || name == "environment:spectra";
+    return name == "environment:spectral-weights" || name == "environment:spectra" || name == "environment:fourier";
 }
 
 EnvironmentMaps::EnvironmentMaps(const std::string& source, const ResourceLimits& limits) : source_(source) {
@@ -133,7 +135,33 @@ const GpuTexture* EnvironmentMaps::texture(const std::string& name) const {
     if (name == "environment:dfg") return &dfg_texture_;
     if (name == "environment:spectral-weights") return &spectral_weights_;
     if (name == "environment:spectra") return &spectra_;
+    if (name == "environment:fourier") {
+        if (!fourier_) {
+            // Without a spectral form: one zero texel, as the other textures (nothing samples it then).
+            const spectral::PackedTexture* table = spectral_fourier();
+            const texture::TextureData none{texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(1, 1, {0, 0, 0, 0})}},
+                                            "no spectral environment"};
+            fourier_ = std::make_unique<GpuTexture>(upload(table ? table->texture : none, specular_data_.source + " (thin-film transforms)"));
+        }
+        return fourier_.get();
+    }
     return nullptr;
+}
+
+const spectral::PackedTexture* EnvironmentMaps::spectral_fourier() const {
+    if (!environment_.spectral) return nullptr;
+    std::call_once(fourier_made_, [this] {
+        std::vector<spectral::NamedSpectrum> spectra(3);
+        for (size_t k = 0; k < 3; ++k) {
+            spectra[k].name = "environment spectrum " + std::to_string(k);
+            // As the GPU's environment:spectra holds them (float), zero outside 360-830 nm.
+            for (int nm = lighting::SpectralForm::kFirstNm; nm <= lighting::SpectralForm::kLastNm; ++nm)
+                spectra[k].spectrum[nm] = static_cast<float>(environment_.spectral->spectra[k][static_cast<size_t>(nm - lighting::SpectralForm::kFirstNm)]);
+        }
+        fourier_data_ = std::make_unique<spectral::PackedTexture>(
+            spectral::fourier_table(spectra, spectral::load_observer("1931"), spectral::load_observer("1964")));
+    });
+    return fourier_data_.get();
 }
 
 }  // namespace fxview::render

@@ -12,12 +12,18 @@
 //                           spectral form (lighting::SpectralForm, the built-in sky's), discs drawn in
 //   environment:spectra     471x1 RGBA32F: its three spectra at 360-830 nm; alpha 1 where the
 //                           environment has a spectral form, all 0 where it has none
+//   environment:fourier     the thin-film sensitivity transforms of those three spectra under both
+//                           observers, laid out as spectral:fourier (spectral/fourier_table.hpp):
+//                           table observer · 3 + k; made on first use (a tenth of a second)
 // No source: black textures of one texel (an effect samples them and adds nothing).
 #pragma once
+#include <memory>
+#include <mutex>
 #include <string>
 
 #include "lighting/image_based_lighting.hpp"
 #include "render/effect_resources.hpp"
+#include "spectral/packing.hpp"
 #include "texture/texture_data.hpp"
 
 namespace fxview::render {
@@ -37,9 +43,11 @@ public:
     // The texture an "environment:..." ResourceName names; nullptr for an unknown name.
     const GpuTexture* texture(const std::string& resource_name) const;
     static bool is_resource_name(const std::string& name);
-    static bool is_spectral_resource_name(const std::string& name);  // the spectral form's two
+    static bool is_spectral_resource_name(const std::string& name);  // the spectral form's three
     bool has_spectral_form() const { return environment_.spectral.has_value(); }
     const texture::TextureData& spectral_weights_data() const { return spectral_weights_data_; }  // faces[face][0]
+    // environment:fourier on the CPU (made on first use, thread-safe); nullptr without a spectral form.
+    const spectral::PackedTexture* spectral_fourier() const;
 
     // The same numbers on the CPU.
     const lighting::PrefilteredEnvironment& prefiltered() const { return prefiltered_; }
@@ -59,6 +67,11 @@ private:
     std::vector<texture::TextureData> specular_levels_;
     texture::TextureData spectral_weights_data_;
     GpuTexture specular_, irradiance_, dfg_texture_, background_, spectral_weights_, spectra_;
+    // The sky's Fourier tables: the CPU copy for references (any thread), the GL texture for the
+    // render thread, each made when first asked for.
+    mutable std::once_flag fourier_made_;
+    mutable std::unique_ptr<spectral::PackedTexture> fourier_data_;
+    mutable std::unique_ptr<GpuTexture> fourier_;
 };
 
 }  // namespace fxview::render
