@@ -16,6 +16,7 @@
 // CPU references: viewer/reference/cd_reference.cpp.
 #include "standard.glsl"
 #include "spectral.glsl"
+#include "environment_spectral.glsl"
 
 uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
                             string UIHelp = "Index in spectra/library.txt (5 = D65)"; > = 5;
@@ -38,6 +39,10 @@ uniform float ZeroOrder < string UIName = "Mirror share"; float UIMin = 0; float
                           string UIHelp = "Part of the reflected light in the plain mirror image of the lamp; the rest goes into the rainbow orders"; > = 0.35;
 uniform float PitFraction < string UIName = "Pit width"; float UIMin = 0.05; float UIMax = 0.95; string UIGroup = "Diffraction orders";
                             string UIHelp = "Part of each track period the pits fill: how the rainbow light is shared between the first, second, third ... orders"; > = 0.35;
+uniform int EnvironmentBand < string UIName = "Environment band"; int UIMin = 1; int UIMax = 50; string UIUnits = "nm"; string UIGroup = "Diffraction orders";
+                               string UIHelp = "Under --environment sky or studio: each order looks up the surroundings once per band of this many nm (1: at every sample; 10: the sun's rainbow image moves 0.4 degrees per band in the first order)"; > = 10;
+uniform float Lamp < string UIName = "Lamp"; float UIMin = 0; float UIMax = 4; float UIStep = 0.05; string UIGroup = "Diffraction orders";
+                     string UIHelp = "Scales the scene's light (0: the disc is lit by the environment alone, --environment sky or studio)"; > = 1.0;
 
 // The surroundings mirrored in the disc (fig. 34, 36): a cube map added in RGB after the spectral part.
 texture EnvironmentTexture < string ResourceName = "sky_cross.png"; string ResourceType = "CUBE"; string ColorSpace = "sRGB"; >;
@@ -47,6 +52,9 @@ uniform float EnvironmentWeight < string UIName = "Environment"; float UIMin = 0
 
 struct Disc { vec3 n, l, v, across, along; };
 
+// Under a spectral scene environment (--environment sky or studio) the Orders technique diffracts the
+// surroundings themselves, so this stand-in is off there.
+bool orders_see_environment() { return spectral_environment(); }
 vec3 environment(Disc d) { return EnvironmentWeight * texture(Environment, reflect(-d.v, d.n)).rgb; }
 
 Disc disc_at(vec3 position, vec3 normal, vec3 tangent, vec2 uv) {
@@ -233,8 +241,9 @@ GLSLShader OrdersFS {
             weights[m] = sinc_squared_weight(m);
             shares[m] = shares[m - 1] + weights[m];
         }
-        float diffuse = max(dot(d.n, d.l), 0.0);
+        float diffuse = max(dot(d.n, d.l), 0.0) * Lamp;
         float tracks = float(max(Tracks, 1)), reach = sqrt(max(1.0 - view.y * view.y, 0.0)), spacing = max(TrackSpacing, 1.0);
+        bool surroundings = orders_see_environment();
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
         for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
@@ -259,9 +268,42 @@ GLSLShader OrdersFS {
                 float efficiency = m == 0 ? (others > 0.0 ? ZeroOrder : 1.0) : (1.0 - ZeroOrder) * weights[abs(m)] / others;
                 radiance += efficiency * sphere_light_radiance(chord, edge, width);
             }
-            add_sample(xyz, ybar_sum, nm, Reflectance * radiance, diffuse);
+            add_sample(xyz, ybar_sum, nm, Reflectance * radiance * Lamp, diffuse);
         }
-        color = vec4(xyz_to_srgb(xyz * normalisation(ybar_sum) * Brightness) + environment(d), 1.0);
+        // The surroundings: every propagating order mirrors the environment's spectral radiance
+        // L = Σ_k w_k S_k from the direction the grating equation picks for it. The direction moves
+        // slowly with λ, so it is found once per band of EnvironmentBand nm, at the band's mean
+        // wavelength, and the band's samples of S_k × CMF are summed first. The orders' widths are
+        // not applied: the sky and the studio are smooth at their scale.
+        int step = max(Steps, 1), per_band = max(EnvironmentBand / step, 1);
+        for (int start = Lower; surroundings && view.z > 0.0 && start <= Upper; start += per_band * step) {
+            vec3 band_x = vec3(0.0), band_y = vec3(0.0), band_z = vec3(0.0);  // Σ S_k cmf_c per k
+            float nm_sum = 0.0, count = 0.0;
+            for (int i = 0; i < per_band; ++i) {
+                int nm = start + i * step;
+                if (nm > Upper) break;
+                vec3 spectra = spectral_environment_spectra(nm), cmf = cmf_at(nm);
+                band_x += spectra * cmf.x;
+                band_y += spectra * cmf.y;
+                band_z += spectra * cmf.z;
+                nm_sum += float(nm);
+                count += 1.0;
+            }
+            float ratio = nm_sum / count / spacing, orders_per_unit = 1.0 / ratio;
+            int first = clamp(int(floor((view.x - reach) * orders_per_unit)) + 1, -kMaxOrder, 0);
+            int last = clamp(int(ceil((view.x + reach) * orders_per_unit)) - 1, 0, kMaxOrder);
+            float others = shares[-first] + shares[last];
+            for (int m = first; m <= last; ++m) {
+                vec2 tangential = vec2(float(m) * ratio - view.x, -view.y);
+                float z2 = 1.0 - dot(tangential, tangential);
+                if (z2 <= 0.0) continue;
+                vec3 incidence = tangential.x * d.across + tangential.y * d.along + sqrt(z2) * d.n;
+                float efficiency = m == 0 ? (others > 0.0 ? ZeroOrder : 1.0) : (1.0 - ZeroOrder) * weights[abs(m)] / others;
+                vec3 w = spectral_environment_weights(incidence);
+                xyz += Reflectance * efficiency * vec3(dot(w, band_x), dot(w, band_y), dot(w, band_z));
+            }
+        }
+        color = vec4(xyz_to_srgb(xyz * normalisation(ybar_sum) * Brightness) + (surroundings ? vec3(0.0) : environment(d)), 1.0);
         fx_capture();
         fx_capture_footprint = vec4(view_spread, turn_spread, 0.0, 0.0);
     }

@@ -1,5 +1,6 @@
 #include "lighting/environment_sources.hpp"
 
+#include <functional>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -108,6 +109,17 @@ Environment make_sky(const Sky& sky, int size) {
                                   {{sun, sun_radius, glm::dvec3(0.0, sun_scale / sun_solid_angle, 0.0)}}, std::nullopt};
     environment.spectral = SpectralForm{weight_cube.radiance_with_discs(), {daylight_spectrum(12000.0), daylight_spectrum(sky.sun_cct), {}}};
     environment.spectral->spectra[2].assign(environment.spectral->spectra[0].size(), 0.0);
+    return environment;
+}
+
+// A neutral environment of grey radiance: all in D65 (CIE daylight at 6504 K, the white of sRGB),
+// so its spectral form is one spectrum weighted by the grey level. The studio (walls, floor and soft
+// boxes are neutral) and the furnace are such.
+Environment neutral_environment(int size, int supersampling, const std::function<glm::vec3(const glm::dvec3&)>& grey) {
+    Environment environment{tabulate(size, supersampling, grey), {}, std::nullopt};
+    environment.spectral = SpectralForm{tabulate(size, supersampling, [&](const glm::dvec3& d) { return glm::vec3(grey(d).g, 0.0f, 0.0f); }),
+                                        {daylight_spectrum(6504.0), {}, {}}};
+    for (size_t k = 1; k < 3; ++k) environment.spectral->spectra[k].assign(environment.spectral->spectra[0].size(), 0.0);
     return environment;
 }
 
@@ -282,7 +294,9 @@ glm::vec3 studio_radiance(const glm::dvec3& d) {
     return glm::vec3(static_cast<float>(base));
 }
 
-bool has_spectral_form(const std::string& source) { return source == "sky" || source.rfind("sky:", 0) == 0; }
+bool has_spectral_form(const std::string& source) {
+    return source == "studio" || source == "furnace" || source == "sky" || source.rfind("sky:", 0) == 0;
+}
 
 Sky parse_sky(const std::string& source) {
     Sky sky;
@@ -305,8 +319,8 @@ Sky parse_sky(const std::string& source) {
 Environment make_environment(const std::string& source, int size, const ResourceLimits& limits) {
     if (source.size() > kMaxEnvironmentSourceChars)
         throw UsageError("environment: " + std::to_string(source.size()) + " characters, longer than any list of six file names");
-    if (source == "studio") return {tabulate(size, 2, studio_radiance), {}, std::nullopt};
-    if (source == "furnace") return {tabulate(size, 1, [](const glm::dvec3&) { return glm::vec3(1.0f); }), {}, std::nullopt};
+    if (source == "studio") return neutral_environment(size, 2, studio_radiance);
+    if (source == "furnace") return neutral_environment(size, 1, [](const glm::dvec3&) { return glm::vec3(1.0f); });
     if (source == "sky" || source.rfind("sky:", 0) == 0) return make_sky(parse_sky(source), size);
     // A bare word that is no file is most likely a misspelt built-in name.
     std::error_code error;

@@ -40,10 +40,10 @@ struct DiscLight {
 // exact for a mirror (alpha 0) and for lobes much wider than the disc.
 double disc_widened_alpha(double alpha, double angular_radius);
 
-// An environment's spectral form where it has one (the built-in sky): L(d, λ) = Σ_k w_k(d) S_k(λ)
+// An environment's spectral form where it has one (the built-in sky, studio and furnace): L(d, λ) = Σ_k w_k(d) S_k(λ)
 // for k < 3, each S_k of luminance 1 (CIE 1931: Σ S ȳ = Σ ȳ over 360-830 nm at 1 nm), so that the RGB
 // radiance is Σ_k w_k rgb(S_k). The weights are tabulated with the disc lights drawn in: what a mirror
-// sees. The spectral techniques (thin films) read it; RGB images have none (no uplift yet).
+// sees. The spectral techniques (thin films, the CD's orders) read it; RGB images have none (no uplift yet).
 struct SpectralForm {
     FloatCube weights;                                // RGB: w_0, w_1, w_2
     std::array<std::vector<double>, 3> spectra;       // 360-830 nm at 1 nm; an unused one is zero
@@ -69,6 +69,6 @@ struct Sky {
     double sun_cct = 5500.0;
 };
 Sky parse_sky(const std::string& source);  // "sky", "sky:ELEV" or "sky:ELEV,CCT"
-bool has_spectral_form(const std::string& source);  // the built-in sky's environments have one
+bool has_spectral_form(const std::string& source);  // the built-in sky, studio and furnace have one
 
 }  // namespace fxview::lighting

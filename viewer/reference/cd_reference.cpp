@@ -10,6 +10,7 @@
 
 #include "optics/grating.hpp"
 #include "optics/grating_orders.hpp"
+#include "reference/environment_reference.hpp"
 #include "reference/spectral_integration.hpp"
 
 namespace fxview::reference {
@@ -85,6 +86,13 @@ Sample grating_sample(const Disc& d, const ShadingInput& in, const ReferenceCont
 // chords to the light's centre by float-sized amounts, for the slack.
 constexpr int kMaxOrder = 32;
 
+// The scene environment the orders diffract: one with a spectral form (the sky, the studio), else none.
+std::optional<EnvironmentLookup> surroundings_of(const ReferenceContext& c) {
+    std::optional<EnvironmentLookup> environment = EnvironmentLookup::from(c);
+    if (!environment || !environment->spectral() || !(c.environment->intensity > 0)) return std::nullopt;
+    return environment;
+}
+
 double orders_radiance(const Disc& d, const ShadingInput& in, const ReferenceContext& c, int nm, double offset) {
     optics::GratingOrderModel model;
     model.spacing_nm = std::max(c.number("TrackSpacing"), 1.0);
@@ -103,10 +111,11 @@ double orders_radiance(const Disc& d, const ShadingInput& in, const ReferenceCon
     for (int m = range.first; m <= range.last; ++m) {
         const auto l = optics::order_incidence(view, m, nm, model.spacing_nm);
         if (!l) continue;
+        const double efficiency = efficiencies[static_cast<size_t>(m - range.first)];
         const glm::dvec3 incidence = l->x * d.across + l->y * d.along + l->z * d.n;
         const double chord = glm::length(incidence - d.l) + offset;
         const double width = ratio / tracks + in.footprint.x + std::abs(m) * ratio * in.footprint.y;
-        radiance += efficiencies[static_cast<size_t>(m - range.first)] * optics::sphere_light_radiance(chord, edge, width);
+        radiance += efficiency * optics::sphere_light_radiance(chord, edge, width) * c.number("Lamp");
     }
     return radiance;
 }
@@ -121,38 +130,120 @@ Sample orders_sample(const Disc& d, const ShadingInput& in, const ReferenceConte
     return {value, uncertainty};
 }
 
+// The surroundings through the orders (cd.fx OrdersFS): per band of EnvironmentBand nm, the band's
+// samples of S_k × CMF summed, and each propagating order at the band's mean wavelength mirroring the
+// weights w_k found in its direction. XYZ before k and Brightness; `slack` (XYZ, any channel) gets
+// the change from float-sized moves of the view (an order over the edge of propagation) and the
+// weight cube's seams (where GL leaves the texel to the implementation).
+spectral::Vec3 orders_surroundings(const Disc& d, const ReferenceContext& c, const SpectralSetup& s, const EnvironmentLookup& environment,
+                                   double* slack) {
+    optics::GratingOrderModel model;
+    model.spacing_nm = std::max(c.number("TrackSpacing"), 1.0);
+    model.zero_order = c.number("ZeroOrder");
+    model.pit_fraction = c.number("PitFraction");
+    model.reflectance = c.number("Reflectance");
+    const int per_band = std::max(static_cast<int>(c.number("EnvironmentBand")) / s.steps, 1);
+    const auto at = [&](double offset, double* seams) {
+        spectral::Vec3 xyz{};
+        const glm::dvec3 view(glm::dot(d.v, d.across) + offset, glm::dot(d.v, d.along), glm::dot(d.v, d.n));
+        if (view.z <= 0) return xyz;
+        for (int start = s.lower; start <= s.upper; start += per_band * s.steps) {
+            std::array<glm::dvec3, 3> band{};  // per CMF channel: Σ S_k cmf_c over k
+            double nm_sum = 0, count = 0;
+            for (int i = 0; i < per_band && start + i * s.steps <= s.upper; ++i) {
+                const int nm = start + i * s.steps;
+                const spectral::Vec3 cmf = spectral::cmf_value(*s.cmf, s.observer, nm);
+                glm::dvec3 spectra;
+                for (int k = 0; k < 3; ++k) spectra[k] = environment.spectral_radiance(glm::dvec3(k == 0, k == 1, k == 2), nm);
+                for (size_t ch = 0; ch < 3; ++ch) band[ch] += spectra * (cmf[ch] * s.cmf_unit);
+                nm_sum += nm;
+                ++count;
+            }
+            const double wavelength = nm_sum / count;
+            optics::OrderRange range = optics::propagating_orders(view, wavelength, model.spacing_nm);
+            range.first = std::max(range.first, -kMaxOrder);
+            range.last = std::min(range.last, kMaxOrder);
+            const std::vector<double> efficiencies = optics::order_efficiencies(model, range);
+            for (int m = range.first; m <= range.last; ++m) {
+                const auto l = optics::order_incidence(view, m, wavelength, model.spacing_nm);
+                if (!l) continue;
+                const double efficiency = efficiencies[static_cast<size_t>(m - range.first)];  // includes the reflectance
+                double seam = 0;
+                const glm::dvec3 w = environment.spectral_weights(l->x * d.across + l->y * d.along + l->z * d.n, &seam);
+                for (size_t ch = 0; ch < 3; ++ch) {
+                    xyz[ch] += efficiency * glm::dot(w, band[ch]);
+                    if (seams) *seams = std::max(*seams, efficiency * seam * (band[ch].x + band[ch].y + band[ch].z));
+                }
+            }
+        }
+        return xyz;
+    };
+    double seams = 0;
+    const spectral::Vec3 value = at(0.0, &seams);
+    if (slack) {
+        *slack = 0;
+        for (const double offset : {-2e-6, 2e-6}) {
+            const spectral::Vec3 moved = at(offset, nullptr);
+            for (size_t ch = 0; ch < 3; ++ch) *slack = std::max(*slack, std::abs(moved[ch] - value[ch]));
+        }
+        // Each band's seam can add at most this much; there are this many bands.
+        *slack += seams * std::ceil((s.upper - s.lower + 1.0) / (per_band * s.steps));
+    }
+    return value;
+}
+
 // The surroundings mirrored in the disc, as the GPU reads its cube map.
-CubeSample environment(const ShadingInput& in, const ReferenceContext& c) {
+CubeSample mirrored_cube(const ShadingInput& in, const ReferenceContext& c) {
     const glm::dvec3 v = glm::normalize(in.camera - in.position), n = glm::normalize(in.normal);
     return c.sample_cube("Environment", 2.0 * glm::dot(n, v) * n - v);
 }
 
-Reference make(Diffraction diffraction) {
+// `surroundings`: the technique's light from the scene environment (spectral radiance, not times the
+// light spectrum), or none; where it is given and the scene has a spectral environment, the lamp is
+// scaled by Lamp and the stand-in cube map is off.
+// Whether a technique diffracts the scene environment (Orders).
+enum class Surroundings { Ignored, Diffracted };
+
+Reference make(Diffraction diffraction, Surroundings surroundings = Surroundings::Ignored) {
     Reference r;
-    r.shade = [diffraction](const ShadingInput& in, const ReferenceContext& c) {
+    r.shade = [diffraction, surroundings](const ShadingInput& in, const ReferenceContext& c) {
         const SpectralSetup s = spectral_setup(c);
         const int light = static_cast<int>(c.number("LightSpectrum")), substrate = static_cast<int>(c.number("SubstrateSpectrum"));
         const double weight = c.number("SubstrateWeight");
         const Disc d = disc(in);
-        const double diffuse = std::max(glm::dot(d.n, d.l), 0.0);
-        std::array<double, 4> rgba = to_rgba(integrate(s, false, [&](int nm) {
+        const bool lamp_scaled = surroundings == Surroundings::Diffracted;
+        const std::optional<EnvironmentLookup> surrounding = lamp_scaled ? surroundings_of(c) : std::nullopt;
+        const double diffuse = std::max(glm::dot(d.n, d.l), 0.0) * (lamp_scaled ? c.number("Lamp") : 1.0);
+        spectral::Vec3 xyz = integrate(s, false, [&](int nm) {
             return spectral::packed_value(*s.spectra, light, nm) *
                    (diffraction(d, in, c, nm, true).intensity + weight * spectral::packed_value(*s.spectra, substrate, nm) * diffuse);
-        }), s.mapping);
-        const glm::dvec4 mirrored = environment(in, c).value * c.number("EnvironmentWeight");
+        });
+        if (surrounding) {
+            const spectral::Vec3 seen = orders_surroundings(d, c, s, *surrounding, nullptr);
+            for (size_t ch = 0; ch < 3; ++ch) xyz[ch] += seen[ch] * output_scale(s);
+        }
+        std::array<double, 4> rgba = to_rgba(xyz, s.mapping);
+        const bool surrounded = surrounding.has_value();
+        const glm::dvec4 mirrored = surrounded ? glm::dvec4(0.0) : mirrored_cube(in, c).value * c.number("EnvironmentWeight");
         for (int i = 0; i < 3; ++i) rgba[static_cast<size_t>(i)] += mirrored[i];
         return rgba;
     };
-    r.slack = [diffraction](const ShadingInput& in, const ReferenceContext& c) {
+    r.slack = [diffraction, surroundings](const ShadingInput& in, const ReferenceContext& c) {
         const SpectralSetup s = spectral_setup(c);
         const int light = static_cast<int>(c.number("LightSpectrum"));
         const Disc d = disc(in);
+        const std::optional<EnvironmentLookup> surrounded = surroundings == Surroundings::Diffracted ? surroundings_of(c) : std::nullopt;
+        double seen_slack = 0;
+        if (surrounded) orders_surroundings(d, c, s, *surrounded, &seen_slack);
         return colour_uncertainty(s, [&](int nm) { return diffraction(d, in, c, nm, false).uncertainty * spectral::packed_value(*s.spectra, light, nm); }) +
-               environment(in, c).seam_spread * c.number("EnvironmentWeight");
+               (surrounded ? seen_slack * kXyzToRgbRowSum * output_scale(s) : mirrored_cube(in, c).seam_spread * c.number("EnvironmentWeight"));
     };
     // The mirrored cube map is read through sRGB decoding and bilinear weights whose precision GL
     // leaves to the implementation (textured.fx's 4e-3), scaled by its weight.
-    r.tolerance_for = [](const ReferenceContext& c) { return 5e-5 + 4e-3 * c.number("EnvironmentWeight"); };
+    r.tolerance_for = [surroundings](const ReferenceContext& c) {
+        const bool stand_in_off = surroundings == Surroundings::Diffracted && surroundings_of(c);
+        return 5e-5 + (stand_in_off ? 0.0 : 4e-3 * c.number("EnvironmentWeight"));
+    };
     r.tolerance = 5e-5;
     r.why = "float32 sums of up to 471 products against double (as for the other spectral effects, measured ~1e-6); "
             "where x = d u / lambda sits on a jump or a steep flank of a diffraction order, the change its float "
@@ -167,7 +258,7 @@ std::map<std::string, Reference> cd_references() {
     std::map<std::string, Reference> all;
     all.emplace("Thesis", make(thesis_sample));
     all.emplace("Grating", make(grating_sample));
-    all.emplace("Orders", make(orders_sample));
+    all.emplace("Orders", make(orders_sample, Surroundings::Diffracted));
     return all;
 }
 

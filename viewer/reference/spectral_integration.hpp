@@ -22,6 +22,17 @@ struct SpectralSetup {
 // Reads ByteCmf, Observer, Lower, Upper, Steps, K, Brightness and OutputMode.
 SpectralSetup spectral_setup(const ReferenceContext& c);
 
+// k (the user's, or 1 / Σ ȳ over the sampled wavelengths) times the brightness: what sums of
+// weight · cmf over Lower..Upper in Steps are multiplied by.
+inline double output_scale(const SpectralSetup& s) {
+    double ybar = 0;
+    for (int nm = s.lower; nm <= s.upper; nm += s.steps) ybar += spectral::cmf_value(*s.cmf, s.observer, nm)[1] * s.cmf_unit;
+    return (s.k > 0 ? s.k : 1.0 / ybar) * s.brightness;
+}
+
+// Eq. 9's largest absolute row sum: bounds how far any linear sRGB channel moves per unit of XYZ.
+constexpr double kXyzToRgbRowSum = 3.240479 + 1.537150 + 0.498535;
+
 // Sum over the sampled wavelengths (every nm, or Lower..Upper in Steps) of weight(nm) * cmf(nm),
 // times k (the user's, or 1 / sum ybar) and the brightness.
 template <typename Weight>
@@ -50,7 +61,7 @@ double colour_uncertainty(const SpectralSetup& s, Uncertainty uncertainty) {
         ybar += cmf[1] * s.cmf_unit;
         spread += uncertainty(nm) * std::max({cmf[0], cmf[1], cmf[2]}) * s.cmf_unit;
     }
-    return spread * (3.240479 + 1.537150 + 0.498535) * (s.k > 0 ? s.k : 1.0 / ybar) * s.brightness;
+    return spread * kXyzToRgbRowSum * (s.k > 0 ? s.k : 1.0 / ybar) * s.brightness;
 }
 
 // How much larger than at Brightness = `reference_brightness` with automatic k the linear output is:

@@ -195,13 +195,6 @@ void EffectResources::add_texture(const std::string& name, TextureData data, boo
     cpu_copies_.emplace(name, std::move(data));
 }
 
-bool EffectResources::uses_only_spectral_environment() const {
-    if (environment_resources_.empty()) return false;
-    for (const auto& [name, resource] : environment_resources_)
-        if (!EnvironmentMaps::is_spectral_resource_name(resource)) return false;
-    return true;
-}
-
 EffectResources::EffectResources(const effect::Effect& effect, const effect::ParameterValues& values,
                                  const std::vector<std::string>& texture_dirs)
     : effect_(effect) {

@@ -46,7 +46,6 @@ public:
     void set_environment(const EnvironmentMaps* environment) { environment_ = environment; }
     const EnvironmentMaps* environment() const { return environment_; }
     bool uses_environment() const { return !environment_resources_.empty(); }
-    bool uses_only_spectral_environment() const;  // every environment texture it declares is the spectral form's
     // find(), generating a generated texture on first use.
     const GpuTexture* acquire(const std::string& texture_name);
     GLuint sampler(const effect::SamplerState& state);

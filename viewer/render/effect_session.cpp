@@ -69,6 +69,15 @@ std::unique_ptr<EffectSession::Loaded> EffectSession::prepare(std::unique_ptr<ef
                 const std::string semantic = to_lower(uniform.parameter->semantic);
                 t.animated = t.animated || semantic == "time" || semantic == "frame";
                 t.sized_light = t.sized_light || semantic == "lightradius";
+                const effect::TextureResource* texture = effect::is_sampler_type(uniform.parameter->type)
+                                                             ? loaded->effect->find_texture(uniform.parameter->texture.empty() ? uniform.parameter->name
+                                                                                                                                : uniform.parameter->texture)
+                                                             : nullptr;
+                if (texture && texture->files.size() == 1 && EnvironmentMaps::is_resource_name(texture->files[0])) {
+                    t.reads_only_spectral_environment = (!t.reads_environment || t.reads_only_spectral_environment) &&
+                                                        EnvironmentMaps::is_spectral_resource_name(texture->files[0]);
+                    t.reads_environment = true;
+                }
             }
         }
     }
@@ -138,17 +147,17 @@ const EnvironmentMaps& EffectSession::environment(const scene::Environment& envi
     return *environment_;
 }
 
-bool EffectSession::uses_environment_at_all() const { return loaded_->resources->uses_environment(); }
-
 std::string EffectSession::unused_environment_warning(const scene::Environment& environment) const {
     if (environment.source.empty()) return "";
-    if (!loaded_->resources->uses_environment())
-        return path_ + ": warning: this effect's techniques are lit by the point light only; the environment '" + environment.source +
-               "' fills the background but does not light them";
-    if (loaded_->resources->uses_only_spectral_environment() && !lighting::has_spectral_form(environment.source))
+    // Said per technique: in one effect some techniques may read the environment and others not.
+    const TechniqueTraits& t = traits(technique_);
+    if (!t.reads_environment)
+        return path_ + ": warning: technique '" + technique_ + "' is lit by the point light only; the environment '" + environment.source +
+               "' fills the background but does not light it";
+    if (t.reads_only_spectral_environment && !lighting::has_spectral_form(environment.source))
         return path_ + ": warning: the environment '" + environment.source +
-               "' has no spectral form (only the built-in sky has one); this effect's techniques stay lit by their light spectrum, "
-               "the environment fills the background";
+               "' has no spectral form (the built-in sky and studio have one; images not yet); technique '" + technique_ +
+               "' stays lit by its light spectrum, the environment fills the background";
     return "";
 }
 

@@ -47,11 +47,10 @@ public:
     // The scene environment's maps, made (lighting/, about a second) when the source changes; the
     // frame's effect samples them (render() calls this). Throws Error naming a bad source.
     const EnvironmentMaps& environment(const scene::Environment& environment);
-    // Empty when the effect's shaders read the environment (or none is set); otherwise a warning that
-    // it only fills the background: said, never silently ignored. Effects that read only its spectral
-    // form (thin films) are warned where the environment has none (all but the built-in sky).
+    // Empty when the selected technique's shaders read the environment (or none is set); otherwise a
+    // warning that it only fills the background: said, never silently ignored. Techniques that read only
+    // its spectral form (thin films, the CD's orders) are warned where the environment has none (images).
     std::string unused_environment_warning(const scene::Environment& environment) const;
-    bool uses_environment_at_all() const;  // declares environment textures (maybe only the spectral form's)
     // The same for a sphere light's radius that the selected technique does not read (LIGHTRADIUS).
     std::string unused_light_radius_warning(const scene::Light& light) const;
     std::vector<std::string> scene_warnings(const scene::Scene& scene) const;  // both of the above that apply
@@ -62,6 +61,8 @@ public:
         bool animated = false;             // a TIME or FRAME semantic is read: the picture changes with time alone
         bool renders_to_textures = false;  // later passes may read neighbouring pixels: no strip-by-strip drawing
         bool sized_light = false;          // the LIGHTRADIUS semantic is read: the light's size shows
+        bool reads_environment = false;    // it samples an "environment:..." texture
+        bool reads_only_spectral_environment = false;  // ... and only the spectral form's
     };
     const TechniqueTraits& traits(const std::string& technique) const;
     const std::set<std::string>& parameters_read(const std::string& technique) const { return traits(technique).reads; }

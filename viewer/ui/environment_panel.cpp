@@ -56,8 +56,8 @@ void EnvironmentPanel::draw(scene::Environment& environment, render::EffectSessi
     if (session)
         if (const std::string warning = session->unused_environment_warning(environment); !warning.empty())
             ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s",
-                               session->uses_environment_at_all() ? "This environment has no spectral form (only the sky has):\nthe effect stays lit by its light spectrum."
-                                                                  : "This effect is lit by the point light only:\nthe environment fills the background.");
+                               warning.find("point light only") == std::string::npos ? "This environment has no spectral form (the sky, studio and furnace have one;\nimages not yet): the effect stays lit by its light spectrum."
+                                                                  : "This technique is lit by the point light only:\nthe environment fills the background.");
     if (!error_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.35f, 1.0f), "%s", error_.c_str());
     if (!environment.source.empty()) {
         ImGui::SliderFloat("rotation", &environment.rotation_degrees, -180.0f, 180.0f, "%.0f deg");
