@@ -46,6 +46,9 @@ run: build
 	$(FXVIEW) render tests/effects/legacy/glow.fx --mesh sphere --size 512x512 --out out/sphere-legacy-glow.png
 	$(FXVIEW) render effects/spectral/cd.fx --mesh disc --camera-rotate 50,0,0 --light-angle 15 --size 512x512 --out out/disc-cd.png
 	$(FXVIEW) render effects/spectral/cd.fx --mesh disc --camera-rotate 50,0,0 --light-angle 2 --size 512x512 --out out/disc-cd-lamp.png
+	$(FXVIEW) render effects/spectral/cd.fx --mesh disc --environment studio --set Lamp=0 --camera-rotate -25,15,0 --size 512x512 --out out/disc-cd-studio.png
+	$(FXVIEW) render effects/spectral/thinfilm.fx --technique FresnelFourier --mesh plane --set FilmIndex=1.5 --set SubstrateIndex=1.33 --set Thickness=150 --set Variation=900 --environment sky:35 --camera-rotate -70,0,0 --camera-distance 2.2 --size 512x512 --out out/plane-oil-sky.png
+	$(FXVIEW) render effects/spectral/thinfilm.fx --technique FresnelFourier --mesh knot --set FilmIndex=2.4 --set SubstrateIndex=2.54 --set SubstrateKappa=3.43 --set Thickness=60 --set Variation=200 --set Brightness=1 --environment studio --size 512x512 --out out/knot-anodized-studio.png
 	$(FXVIEW) spectra plot D65 A F11 TCS09 --out out/spectra.png
 	$(FXVIEW) compare effects/spectral/wavelength.fx --heatmap out/compare.png
 	$(FXVIEW) compare effects/spectral/thinfilm.fx --size 96x96 --heatmap out/compare-thinfilm.png
