@@ -223,6 +223,27 @@ TEST_CASE("a scene glow: technique-script targets, the external scene, a blur th
     CHECK(e.techniques[0].passes[1].states.render_targets == std::vector<std::string>{"BlurMap"});
 }
 
+TEST_CASE("LoopByCount=PARAM runs as many passes as the parameter's current value, changed without reloading") {
+    shared_context();
+    render::EffectSession session(kLegacy + "/loop_count.fx", load_options(), {});
+    gl::RenderTarget target({8, 8, 1, 0});
+    // Each pass adds 0.1 to the cleared frame (additive blending): the frame holds 0.1 x the passes run.
+    for (const int count : {3, 0, 7, 10, 1}) {
+        CAPTURE(count);
+        session.values().numbers["Count"] = {static_cast<double>(count)};
+        session.render(scene::Scene{}, target);
+        REQUIRE(glGetError() == GL_NO_ERROR);
+        CHECK(target.read_color(0).pixel(4, 4)[0] == doctest::Approx(0.1 * count).epsilon(1e-5));
+    }
+    // Unrolled once to its UIMax (10); the copies share one GL program.
+    const effect::Effect e = effect::load_effect(kLegacy + "/loop_count.fx", load_options());
+    REQUIRE(e.techniques[0].passes.size() == 10);
+    CHECK(e.techniques[0].passes[9].runs_if.size() == 1);
+    CHECK(e.techniques[0].passes[9].runs_if[0].iteration == 10);
+    const effect::CompiledTechnique compiled = effect::compile_technique(e, e.techniques[0]);
+    CHECK(compiled.passes[0].program == compiled.passes[9].program);
+}
+
 TEST_CASE("missing textures become placeholders with a warning naming file and parameter") {
     shared_context();
     render::EffectSession session(kLegacy + "/plastic_dx9.fx", load_options(), {});

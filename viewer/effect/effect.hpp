@@ -111,11 +111,19 @@ struct ShaderBlock {
     std::string translation_errors;
 };
 
+// A legacy script's LoopByCount=PARAM runs its passes PARAM times: they are unrolled to the most the
+// parameter allows, and each copy runs only while the parameter's current value reaches its iteration.
+struct LoopCondition {
+    std::string parameter;
+    int iteration = 1;  // 1-based
+};
+
 struct Pass {
     std::string name;
     std::map<ShaderStage, std::string> shaders;  // stage -> shader block name
     RenderStates states;
     SourceLocation where;
+    std::vector<LoopCondition> runs_if;  // all must hold; empty: always runs
 };
 
 struct Technique {

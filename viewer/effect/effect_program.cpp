@@ -77,6 +77,7 @@ CompiledTechnique compile_technique(const Effect& effect, const Technique& techn
     CompiledTechnique compiled;
     compiled.technique = &technique;
     std::string errors;
+    std::map<std::string, std::shared_ptr<gl::Program>> linked;  // by the stages' sources
     for (const auto& pass : technique.passes) {
         std::vector<gl::ShaderSource> stages;
         for (const auto& [stage, name] : pass.shaders)
@@ -97,8 +98,12 @@ CompiledTechnique compile_technique(const Effect& effect, const Technique& techn
                 if (!line.empty()) errors += line + " [technique " + technique.name + ", pass " + pass.name + "]\n";
             continue;
         }
+        std::string key;
+        for (const auto& stage : stages) key += std::to_string(stage.stage) + '\n' + stage.source + '\0';
         try {
-            compiled_pass.program = gl::link_program(stages);
+            std::shared_ptr<gl::Program>& program = linked[key];
+            if (!program) program = std::make_shared<gl::Program>(gl::link_program(stages));
+            compiled_pass.program = program;
         } catch (const gl::ShaderError& error) {
             // Each driver message becomes "file:line: message (technique, pass)"; messages without a
             // line (link errors) are given the pass's location.
@@ -113,7 +118,7 @@ CompiledTechnique compile_technique(const Effect& effect, const Technique& techn
             if (error.log.empty()) errors += pass.where.str() + ": " + error.what() + context + "\n";
             continue;
         }
-        const GLuint program = compiled_pass.program.get();
+        const GLuint program = compiled_pass.program->get();
         GLint count = 0;
         glGetProgramInterfaceiv(program, GL_UNIFORM, GL_ACTIVE_RESOURCES, &count);
         for (GLint i = 0; i < count; ++i) {
@@ -227,7 +232,7 @@ void bind_uniforms(const CompiledPass& pass, const ParameterValues& values, cons
         glNamedBufferSubData(block.buffer.get(), 0, static_cast<GLsizeiptr>(bytes.size()), bytes.data());
         glBindBufferBase(GL_UNIFORM_BUFFER, block.layout->binding, block.buffer.get());
     }
-    const GLuint program = pass.program.get();
+    const GLuint program = pass.program->get();
     for (const auto& uniform : pass.uniforms) {
         const Parameter& p = *uniform.parameter;
         const int components = component_count(p.type);

@@ -2,6 +2,7 @@
 // shared top-level GLSL and the pass's shader blocks; active uniforms are reflected and checked
 // against the declarations, and bound each draw from parameter values or SAS semantics.
 #pragma once
+#include <memory>
 #include <vector>
 
 #include "effect/effect.hpp"
@@ -28,7 +29,8 @@ struct BoundUniformBlock {
 
 struct CompiledPass {
     const Pass* pass = nullptr;
-    gl::Program program;
+    // Shared between passes of one technique whose stages are the same (a legacy loop's copies).
+    std::shared_ptr<gl::Program> program;
     std::vector<BoundUniform> uniforms;
     std::vector<BoundUniformBlock> blocks;
     bool row_vectors = false;  // the effect's matrix convention (Effect::row_vectors)

@@ -73,11 +73,13 @@ void apply_technique_script(effect::Technique& technique, const std::vector<bool
     const std::vector<Command> commands = script_commands(technique.annotations);
     if (std::none_of(commands.begin(), commands.end(), [](const Command& c) { return c.key == "pass"; })) return;
     constexpr size_t kMaxPasses = 256;
+    constexpr int kMaxLoopCount = 64;
     std::vector<effect::Pass> ordered;
     std::vector<std::string> targets;  // the technique script's current targets
     effect::RenderStates clears;       // its pending Clear / ClearSet* for the next pass
     bool pending_clear = false;
-    struct Loop { size_t command; int left; };
+    // A loop by a parameter is unrolled to the most it allows and its copies carry their iteration.
+    struct Loop { size_t command; int left; int count; std::string parameter; };
     std::vector<Loop> loops;
     std::map<std::string, int> uses;
     size_t steps = 0;
@@ -119,15 +121,23 @@ void apply_technique_script(effect::Technique& technique, const std::vector<bool
                 if (!pass.states.clear_depth) pass.states.clear_depth = clears.clear_depth;
                 pending_clear = false;
             }
+            for (const Loop& loop : loops)
+                if (!loop.parameter.empty()) pass.runs_if.push_back({loop.parameter, loop.count - loop.left + 1});
             check_targets(pass, effect, warnings);
             ordered.push_back(std::move(pass));
         } else if (c.key == "loopbycount") {
             int count = 0;
-            if (const effect::Parameter* p = effect.find_parameter(c.value); p && p->default_value && !p->default_value->numbers.empty())
-                count = static_cast<int>(p->default_value->numbers[0]);
-            else
+            std::string parameter;
+            if (const effect::Parameter* p = effect.find_parameter(c.value)) {
+                // The user may change it: unrolled to its UIMax, else to at least 16 (and its default).
+                const double largest = p->ui.max ? *p->ui.max
+                                                 : std::max(16.0, p->default_value && !p->default_value->numbers.empty() ? p->default_value->numbers[0] : 0.0);
+                count = static_cast<int>(std::clamp(largest, 0.0, static_cast<double>(kMaxLoopCount)));
+                parameter = p->name;
+            } else {
                 try { count = std::stoi(c.value); } catch (const std::exception&) { count = 1; }
-            loops.push_back({i, std::clamp(count, 0, 64)});
+            }
+            loops.push_back({i, std::clamp(count, 0, kMaxLoopCount), std::clamp(count, 0, kMaxLoopCount), parameter});
             if (loops.back().left == 0) {  // skip the body
                 int depth = 1;
                 while (depth > 0 && ++i < commands.size()) depth += commands[i].key == "loopbycount" ? 1 : commands[i].key == "loopend" ? -1 : 0;

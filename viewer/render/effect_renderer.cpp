@@ -6,6 +6,19 @@
 
 namespace fxview::render {
 
+namespace {
+
+// Whether the parameters of the loops a pass sits in (legacy LoopByCount) reach its iteration.
+bool runs(const effect::Pass& pass, const effect::ParameterValues& values) {
+    for (const effect::LoopCondition& condition : pass.runs_if) {
+        const auto value = values.numbers.find(condition.parameter);
+        if (value != values.numbers.end() && !value->second.empty() && value->second[0] < condition.iteration) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
 EffectRenderer::PassFramebuffer& EffectRenderer::bind_pass_targets(const effect::Pass& pass,
                                                                    const EffectResources& resources) {
     std::vector<GLuint> textures;
@@ -83,6 +96,8 @@ void EffectRenderer::render(const scene::Scene& scene, const effect::CompiledTec
             glClearDepth(states.clear_depth.value_or(1.0f));
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         }
+        // A copy of a loop's passes beyond the loop parameter's current value: only its clear happens.
+        if (!runs(*pass.pass, values)) continue;
         effect::apply_render_states(states);
         if (states.draw_scene) {
             if (!scene_renderer_) scene_renderer_ = std::make_unique<DebugRenderer>();
@@ -90,7 +105,7 @@ void EffectRenderer::render(const scene::Scene& scene, const effect::CompiledTec
             continue;
         }
         glVertexAttrib4f(5, 1.0f, 1.0f, 1.0f, 1.0f);  // legacy COLOR0 inputs: meshes carry no colours, white
-        glUseProgram(pass.program.get());
+        glUseProgram(pass.program->get());
         for (const auto& uniform : pass.uniforms) {
             if (uniform.texture_unit < 0) continue;
             const effect::Parameter& sampler = *uniform.parameter;

@@ -1,0 +1,30 @@
+// LoopByCount with a parameter, as FX Composer ran it: the technique script clears the frame, then
+// runs the additive pass Count times; each pass adds Step. Changing Count (the panel, --set) changes
+// the number of passes without reloading the effect.
+#include "include\quad.fxh"
+
+float Script : STANDARDSGLOBAL <
+    string UIWidget = "none";
+    string ScriptClass = "scene";
+    string ScriptOrder = "postprocess";
+    string ScriptOutput = "color";
+    string Script = "Technique=Accumulate;";
+> = 0.8;
+
+int Count < string UIName = "Passes"; int UIMin = 0; int UIMax = 10; > = 3;
+float4 ClearColor < string UIWidget = "color"; string UIName = "Background"; > = {0, 0, 0, 1};
+float Step < string UIName = "Added per pass"; > = 0.1;
+
+float4 AddPS(QuadVertexOutput IN) : COLOR { return float4(Step, Step, Step, 0); }
+
+technique Accumulate < string Script = "ClearSetColor=ClearColor; Clear=Color; LoopByCount=Count; Pass=Add; LoopEnd;"; > {
+    pass Add < string Script = "Draw=Buffer;"; > {
+        VertexShader = compile vs_3_0 ScreenQuadVS();
+        ZEnable = false;
+        CullMode = None;
+        AlphaBlendEnable = true;
+        SrcBlend = One;
+        DestBlend = One;
+        PixelShader = compile ps_3_0 AddPS();
+    }
+}
