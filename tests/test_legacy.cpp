@@ -10,6 +10,7 @@
 #include <cstring>
 #include <fstream>
 
+#include "core/text.hpp"
 #include "effect/effect_program.hpp"
 #include "effect/parser.hpp"
 #include "gl/render_target.hpp"
@@ -244,6 +245,33 @@ TEST_CASE("LoopByCount=PARAM runs as many passes as the parameter's current valu
     CHECK(compiled.passes[0].program == compiled.passes[9].program);
 }
 
+TEST_CASE("Cg 3 buffer blocks: each member a parameter of its own, semantics supplied by the scene, VAR.member read unchanged") {
+    shared_context();
+    render::EffectSession session(kLegacy + "/cg3_buffer.cgfx", load_options(), {});
+    const effect::Effect& e = session.effect();
+    const effect::Parameter* matrix = e.find_parameter("cbuffer0_Transform_modelViewProj");
+    REQUIRE(matrix);
+    CHECK(to_lower(matrix->semantic) == "worldviewprojection");
+    REQUIRE(e.find_parameter("cbuffer1_Material_diffuse"));
+    REQUIRE(e.find_parameter("cbuffer1_Material_gain"));
+    REQUIRE(e.find_parameter("cbuffer1_Material_unused"));
+    CHECK(e.find_parameter("cbuffer1_Material_unused")->array_size == 2);
+    bool warned = false;
+    for (const auto& w : session.warnings()) warned = warned || w.find("cg3_buffer.cgfx:3: warning: Cg 3 buffer cbuffer0_Transform") != std::string::npos;
+    CHECK(warned);
+    // The object where the debug view draws it, in the colour the members give.
+    session.values().numbers["cbuffer1_Material_diffuse"] = {0.0, 1.0, 0.5, 1.0};
+    session.values().numbers["cbuffer1_Material_gain"] = {0.5};
+    gl::RenderTarget target({64, 64, 1, 0});
+    session.render(scene::Scene{}, target);
+    const image::FloatImage picture = target.read_color(0);
+    CHECK(overlap(picture, debug_view()) > 0.95);
+    CHECK(picture.pixel(32, 32)[1] == doctest::Approx(0.5));
+    CHECK(picture.pixel(32, 32)[2] == doctest::Approx(0.25));
+    // The error of a compile statement in such a file still names its line (the rewrite keeps lines).
+    CHECK(e.techniques.front().passes.front().where.line == 17);
+}
+
 TEST_CASE("missing textures become placeholders with a warning naming file and parameter") {
     shared_context();
     render::EffectSession session(kLegacy + "/plastic_dx9.fx", load_options(), {});
@@ -275,6 +303,12 @@ TEST_CASE("errors name the original file:line, the technique and the pass") {
         FAIL("an interface was accepted");
     } catch (const effect::EffectError& error) {
         CHECK(std::string(error.what()).find("cg_interface.cgfx:2: Cg interfaces are not supported") != std::string::npos);
+    }
+    try {
+        effect::load_effect(kLegacy + "/cg_geometry.cgfx", load_options());
+        FAIL("a geometry program was accepted");
+    } catch (const effect::EffectError& error) {
+        CHECK(std::string(error.what()).find("cg_geometry.cgfx:4: Cg geometry programs") != std::string::npos);
     }
     // One technique that does not translate: the effect opens with the other and says why.
     render::EffectSession partial(kLegacy + "/partial.fx", load_options(), {});

@@ -111,7 +111,9 @@ void LegacyParser::parse_declaration() {
             if (next().kind == TokenKind::End) fail(open, "'<' is never closed");
     }
     const Token name = next();
-    if (name.kind != TokenKind::Identifier) fail(name, "expected a name after '" + excerpt(type.text) + "', found '" + excerpt(name.text) + "'");
+    if (name.kind != TokenKind::Identifier)
+        fail(name, "expected a name after '" + excerpt(type.text) + "', found '" + excerpt(name.text) + "'" +
+                       (type.text == "struct" ? " (of Cg 3 buffer blocks fxview reads plain members: uniform struct { TYPE name; ... } VAR : BUFFER[n];)" : ""));
     if (is(peek(), "(")) {
         parse_function(type, name);
         return;

@@ -9,6 +9,7 @@
 #include "effect/parser.hpp"
 #include "effect/semantics.hpp"
 #include "legacy/entry_wrapper.hpp"
+#include "legacy/buffer_blocks.hpp"
 #include "legacy/glslang_process.hpp"
 #include "legacy/hlsl_translator.hpp"
 #include "legacy/legacy_parameters.hpp"
@@ -208,12 +209,15 @@ void check_compile_budget(const effect::Effect& effect, const LegacySource& sour
 
 void load_legacy_effect(effect::Effect& effect, const std::string& matrix_convention) {
     effect.sources.replace_text(preprocess_legacy(effect));
+    std::vector<std::string> buffer_warnings;
+    effect.sources.replace_text(rewrite_buffer_blocks(effect.sources.text(), effect.sources, buffer_warnings));
     check_nesting(effect, effect.sources.text());
     const LegacySource source = parse_legacy_source(effect);
     check_compile_budget(effect, source);
     effect.legacy = true;
     effect.row_vectors = row_vectors_for(effect, source, matrix_convention);
-    effect.warnings = source.warnings;
+    effect.warnings = buffer_warnings;
+    effect.warnings.insert(effect.warnings.end(), source.warnings.begin(), source.warnings.end());
     effect.textures = source.textures;
     for (const auto& global : source.globals) add_parameter(effect, global);
     for (auto& p : effect.parameters) {  // UIAtLeast must name another scalar (as native effects check)

@@ -12,6 +12,15 @@
 
 namespace fxview::legacy {
 
+namespace {
+
+// The input primitive that opens a Cg geometry program's entry ("TRIANGLE void main(AttribArray<...> ...)").
+bool is_geometry_primitive(const std::string& word) {
+    return word == "POINT" || word == "LINE" || word == "LINE_ADJ" || word == "TRIANGLE" || word == "TRIANGLE_ADJ";
+}
+
+}  // namespace
+
 LegacySource LegacyParser::parse() {
     for (;;) {
         const Token token = peek();
@@ -31,6 +40,8 @@ LegacySource LegacyParser::parse() {
                                        " skipped (DirectX 10/11 techniques are not supported; the DX9 techniques load)");
         } else if (token.kind == TokenKind::Identifier && token.text == "interface") {
             fail(token, "Cg interfaces are not supported");
+        } else if (token.kind == TokenKind::Identifier && is_geometry_primitive(token.text)) {
+            fail(token, "Cg geometry programs (" + token.text + " ... with emitVertex, profiles gp4gp/gp5gp) are not supported");
         } else if (token.kind == TokenKind::Identifier && token.text == "struct") {
             skip_declaration();
         } else if (token.kind == TokenKind::Identifier && (token.text == "typedef" || token.text == "cbuffer" || token.text == "tbuffer")) {
