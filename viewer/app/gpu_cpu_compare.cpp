@@ -32,6 +32,15 @@ std::vector<std::string> technique_names(const EffectOptions& options) {
 
 namespace {
 
+// Whether the 8-bit PNG codes of the GPU's and the CPU's colour differ by more than one step.
+bool codes_differ(const float* gpu, const std::array<double, 4>& cpu) {
+    for (int c = 0; c < 4; ++c) {
+        const auto encoding = c < 3 ? image::Encoding::Srgb : image::Encoding::Linear;
+        if (std::abs(image::to_8bit(gpu[c], encoding) - image::to_8bit(static_cast<float>(cpu[static_cast<size_t>(c)]), encoding)) > 1) return true;
+    }
+    return false;
+}
+
 // Blue (no error) through yellow (at the tolerance) to red (twice the tolerance and beyond).
 std::array<float, 3> heat(double ratio) {
     const float t = static_cast<float>(std::clamp(ratio, 0.0, 2.0));
@@ -121,7 +130,9 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
     CompareResult result;
     result.technique = session.technique();
     const std::string stem = std::filesystem::path(request.effect.path).stem().string();
-    const reference::Reference* ref = reference::find_reference(stem, result.technique);
+    // A legacy file's technique may have a reference of its own (its code differs from the port's).
+    const reference::Reference* ref = session.effect().legacy ? reference::find_reference(stem, "legacy:" + result.technique) : nullptr;
+    if (!ref) ref = reference::find_reference(stem, result.technique);
     result.has_reference = ref != nullptr;
     if (!ref) return result;
     result.tolerance_reason = ref->why;
@@ -174,14 +185,15 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
                     const reference::ShadingInput input = input_at(x, y);
                     Shaded& out = shaded[static_cast<size_t>(y) * static_cast<size_t>(request.width) + static_cast<size_t>(x)];
                     out.cpu = ref->shade(input, reference_context);
-                    // The slack only matters where the tolerance alone fails, and costs several
-                    // shadings: computed there only.
+                    // The slack only matters where the tolerance alone fails or the 8-bit codes differ,
+                    // and costs several shadings: computed there only.
                     double error = 0;
                     for (int c = 0; c < 4; ++c) {
                         const double difference = std::abs(gpu.pixel(x, y)[c] - out.cpu[static_cast<size_t>(c)]);
                         error = std::isnan(difference) ? std::numeric_limits<double>::infinity() : std::max(error, difference);
                     }
-                    out.slack = ref->slack && error > tolerance ? ref->slack(input, reference_context) : 0.0;
+                    const bool needed = error > tolerance || codes_differ(gpu.pixel(x, y), out.cpu);
+                    out.slack = ref->slack && needed ? ref->slack(input, reference_context) : 0.0;
                     if (with_truth) {
                         const unsigned seed = static_cast<unsigned>(y * request.width + x + 1);
                         out.truth = ref->truth(input, reference_context, seed);
@@ -213,22 +225,18 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
             const std::array<double, 4>& cpu = pixel.cpu;
             const double slack = pixel.slack;
             double pixel_error = 0;
-            bool mismatch = false;
+            const bool mismatch = codes_differ(gpu.pixel(x, y), cpu);
             for (int c = 0; c < 4; ++c) {
-                const double g = gpu.pixel(x, y)[c];
-                const double difference = std::abs(g - cpu[c]);
+                const double difference = std::abs(gpu.pixel(x, y)[c] - cpu[c]);
                 // A NaN on either side is the largest error there is, never hidden by max().
                 pixel_error = std::isnan(difference) ? std::numeric_limits<double>::infinity() : std::max(pixel_error, difference);
-                const auto encoding = c < 3 ? image::Encoding::Srgb : image::Encoding::Linear;
-                const int code_gpu = image::to_8bit(static_cast<float>(g), encoding);
-                const int code_cpu = image::to_8bit(static_cast<float>(cpu[c]), encoding);
-                mismatch = mismatch || std::abs(code_gpu - code_cpu) > 1;
             }
             ++result.pixels;
             error_sum += pixel_error;
             // A pixel that needed its slack (a jump, or a highlight as sensitive as the slack says) is
-            // judged by the float bound alone: the 8-bit check would only repeat it.
-            const bool used_slack = pixel_error > tolerance && pixel_error <= tolerance + slack;
+            // judged by the float bound alone: the 8-bit check would only repeat it. So is one whose
+            // 8-bit codes differ (near black, where sRGB's slope is 12.9) by less than its slack.
+            const bool used_slack = (pixel_error > tolerance || (mismatch && pixel_error <= slack)) && pixel_error <= tolerance + slack;
             if (used_slack) ++result.pixels_within_slack;
             if (mismatch && !used_slack) ++result.mismatched_8bit;
             if (pixel_error > tolerance + slack) ++result.exceeding;

@@ -203,15 +203,35 @@ const char* kPhaseWhy =
 // Eq. 62's frac() jumps by 1 where 2 d n cos / lambda crosses an integer. The GPU's value of that
 // argument is a few float roundings off (~1e-6 relative); at wavelengths closer than that to a jump
 // either side is right, and the colour may differ by that wavelength's whole contribution.
-double path_difference_slack(const ShadingInput& in, const ReferenceContext& c) {
+// `listing_chain`: the refracted cosine is formed as Code 13 prints it, cos(asin(r · sin(acos(c)))),
+// whose float trigonometry errs far more than the port's sqrt form (whose few roundings the 4e-6
+// relative window covers). Bounds, twice what llvmpipe's functions were measured to err over [0, 1]
+// against double (2026-12-06: acos 1.6e-4 rad, asin 3.9e-4 rad, r · sin(acos(c)) 7.5e-5):
+constexpr double kAcosError = 3.2e-4, kAsinError = 8e-4, kSineChainError = 1.5e-4;
+
+double path_difference_slack(const ShadingInput& in, const ReferenceContext& c, bool listing_chain = false) {
     const SpectralSetup s = spectral_setup(c);
     const int light = static_cast<int>(c.number("LightSpectrum"));
     const Film f = film(in, c);
+    double relative = 4e-6;
+    bool anything = false;  // the cosine's error may reach 0: every wavelength may take either side
+    if (listing_chain) {
+        // β = asin(x), x = r sin α: δβ = δasin + (δx + r cos α δacos) / cos β, and δ(cos β) = sin β δβ.
+        const double r = f.n0 / f.n1, sine = std::sqrt(std::max(1.0 - f.cos_light * f.cos_light, 0.0));
+        const double cos_beta = std::sqrt(std::max(1.0 - r * r * sine * sine, 0.0));
+        const double error = cos_beta > 0 ? std::sqrt(1.0 - cos_beta * cos_beta) * (kAsinError + (kSineChainError + r * f.cos_light * kAcosError) / cos_beta)
+                                          : 1.0;
+        // Past the critical angle the listing's cos(asin(1)) is ±4e-8 in float, and frac() of it 0 or nearly 1.
+        anything = cos_beta <= error;
+        relative += anything ? 0.0 : error / cos_beta;
+    }
     return colour_uncertainty(s, [&](int nm) {
+        if (anything) return light_at(f, s, light, nm);
         const double cycles = optics::thesis::path_difference(f.n0, f.n1, f.thickness, nm, f.cos_light, f.cos_view).cycles;
         // frac() jumps by 1 at 1, 2, ...; at 0 it is continuous (the argument is never negative).
-        const bool on_jump = std::round(cycles) >= 1.0 && std::abs(cycles - std::round(cycles)) < 4e-6 * cycles;
-        return on_jump ? light_at(f, s, light, nm) : 0.0;
+        // Elsewhere it follows its argument with slope 1: an uncertain argument moves it as much.
+        const bool on_jump = std::round(cycles) >= 1.0 && std::abs(cycles - std::round(cycles)) < relative * cycles;
+        return light_at(f, s, light, nm) * (on_jump ? 1.0 : listing_chain ? relative * cycles : 0.0);
     });
 }
 
@@ -282,7 +302,18 @@ std::map<std::string, Reference> thin_film_references() {
     path.slack = [phase = path.slack](const ShadingInput& in, const ReferenceContext& c) {
         return phase(in, c) + path_difference_slack(in, c);
     };
-    all.emplace("PathDifference", std::move(path));
+    all.emplace("PathDifference", path);
+    // The thesis' own Cg (effects/legacy/thinfilm.cgfx) forms the refracted cosine as Code 13 prints
+    // it, cos(asin(n0/n1 · sin(acos(c)))): the same value and tolerance as the port, and each pixel's
+    // slack what that chain's float error can move (path_difference_slack).
+    Reference listing = path;
+    listing.slack = [phase = path.slack](const ShadingInput& in, const ReferenceContext& c) {
+        return phase(in, c) + path_difference_slack(in, c, true);
+    };
+    listing.why = std::string(kPhaseWhy) + "; the listing's float acos/asin chain errs by up to 8e-4 rad (twice llvmpipe's measured "
+                  "error), amplified near the film's critical angle: each wavelength's frac() may move by what that makes of "
+                  "its argument, or next to a jump (and past the critical angle) by its whole share (slack)";
+    all.emplace("legacy:PathDifference", std::move(listing));
 
     const Reflectance durikovic =
         per_wavelength([](const Film& f, double nm) { return optics::thesis::durikovic(f.n0, f.n1, f.n2, f.thickness, nm, f.cos0); });
