@@ -119,7 +119,7 @@ CommandRunner add_compare_command(CLI::App& app) {
                                 {"tolerance_reason", r.tolerance_reason}});
                     if (r.pixels == 0) out["error"] = "the mesh covers no pixel: nothing was compared";
                     if (r.ground_truth)
-                        out["ground_truth"] = {{"pixels", r.ground_truth->pixels},
+                        out["ground_truth"] = {{"method", r.ground_truth->method}, {"pixels", r.ground_truth->pixels},
                                                {"mean_delta_e2000", r.ground_truth->mean_delta_e},
                                                {"p95_delta_e2000", r.ground_truth->p95_delta_e},
                                                {"max_delta_e2000", r.ground_truth->max_delta_e},
@@ -142,10 +142,12 @@ CommandRunner add_compare_command(CLI::App& app) {
                 if (r.pixels == 0) std::printf("  - the mesh covers no pixel: nothing was compared (check the camera and mesh)");
                 std::printf("\n");
                 if (r.ground_truth)
-                    std::printf("%-20s approximation against the Monte Carlo integral: CIEDE2000 mean %.3g, 95th percentile %.3g, max %.3g at (%d, %d)\n",
-                                "", r.ground_truth->mean_delta_e, r.ground_truth->p95_delta_e, r.ground_truth->max_delta_e, r.ground_truth->worst_x,
-                                r.ground_truth->worst_y);
-                if (r.ground_truth)
+                    std::printf("%-20s approximation against %s: CIEDE2000 mean %.3g, 95th percentile %.3g, max %.3g at (%d, %d)\n",
+                                "", r.ground_truth->method.c_str(), r.ground_truth->mean_delta_e, r.ground_truth->p95_delta_e, r.ground_truth->max_delta_e,
+                                r.ground_truth->worst_x, r.ground_truth->worst_y);
+                if (r.ground_truth && r.ground_truth->mean_noise_delta_e == 0 && r.ground_truth->p95_noise_delta_e == 0)
+                    std::printf("%-20s (deterministic: no noise of its own)\n", "");
+                else if (r.ground_truth)
                     std::printf("%-20s the integral's own noise (two estimates): CIEDE2000 mean %.3g, 95th percentile %.3g; errors beyond twice "
                                 "it at %ld of %ld pixels, mean %.3g there\n",
                                 "", r.ground_truth->mean_noise_delta_e, r.ground_truth->p95_noise_delta_e, r.ground_truth->pixels_beyond_noise,

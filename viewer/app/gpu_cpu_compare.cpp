@@ -258,6 +258,7 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
             const Shaded& pixel = shaded[static_cast<size_t>(y) * static_cast<size_t>(request.width) + static_cast<size_t>(x)];
             return std::tuple{pixel.cpu, pixel.truth, pixel.second_truth};
         });
+    if (result.ground_truth) result.ground_truth->method = ref->truth_method;
     result.pass = result.pixels > 0 && result.mismatched_8bit == 0 && result.exceeding == 0;
     return result;
 }

@@ -33,6 +33,7 @@ struct CompareResult {
     // sum) is from the integral it stands for (Monte Carlo), as CIEDE2000 of the radiances taken as
     // colours (white: radiance 1). Absent where the technique approximates nothing.
     struct GroundTruth {
+        std::string method;  // the reference's truth_method
         long pixels = 0;
         double mean_delta_e = 0, p95_delta_e = 0, max_delta_e = 0;  // against the mean of two estimates
         // The estimate's own noise (half the two estimates' ΔE00), and the errors beyond twice it.

@@ -94,7 +94,7 @@ Environment make_sky(const Sky& sky, int size) {
     // 0.2 at the default elevation, 0.064 with the sun at 5°, dark once it has set.
     // The sky by its two spectra: the dome's weight (12000 K daylight) and the sun's (CCT), the ground
     // lit by both; its RGB is w_dome sky_colour + w_sun sun_colour.
-    const auto weights = [&](const glm::dvec3& d) {
+    const auto weights = [=](const glm::dvec3& d) {  // by value: the exact form keeps it
         if (d.y < 0.0) return glm::dvec2(0.2 / kPi * sky_scale * sky_horizontal, 0.2 / kPi * sun_scale * std::max(std::sin(el), 0.0));
         const double chi = std::acos(std::clamp(glm::dot(d, sun), -1.0, 1.0));
         return glm::dvec2(sky_scale * clear_sky(std::acos(std::clamp(d.y, 0.0, 1.0)), chi), 0.0);
@@ -107,8 +107,13 @@ Environment make_sky(const Sky& sky, int size) {
     environment.discs.push_back({sun, sun_radius, sun_scale / sun_solid_angle * sun_colour});
     const Environment weight_cube{tabulate(size, 2, [&](const glm::dvec3& d) { return glm::vec3(weights(d), 0.0); }),
                                   {{sun, sun_radius, glm::dvec3(0.0, sun_scale / sun_solid_angle, 0.0)}}, std::nullopt};
-    environment.spectral = SpectralForm{weight_cube.radiance_with_discs(), {daylight_spectrum(12000.0), daylight_spectrum(sky.sun_cct), {}}};
+    environment.spectral = SpectralForm{weight_cube.radiance_with_discs(), {daylight_spectrum(12000.0), daylight_spectrum(sky.sun_cct), {}}, {}};
     environment.spectral->spectra[2].assign(environment.spectral->spectra[0].size(), 0.0);
+    const double sun_cos = std::cos(sun_radius), sun_radiance = sun_scale / sun_solid_angle;
+    environment.spectral->exact = [weights, sun, sun_cos, sun_radiance](const glm::dvec3& d) {
+        const glm::dvec2 w = weights(glm::normalize(d));
+        return glm::dvec3(w.x, w.y + (glm::dot(glm::normalize(d), sun) >= sun_cos ? sun_radiance : 0.0), 0.0);
+    };
     return environment;
 }
 
@@ -118,7 +123,8 @@ Environment make_sky(const Sky& sky, int size) {
 Environment neutral_environment(int size, int supersampling, const std::function<glm::vec3(const glm::dvec3&)>& grey) {
     Environment environment{tabulate(size, supersampling, grey), {}, std::nullopt};
     environment.spectral = SpectralForm{tabulate(size, supersampling, [&](const glm::dvec3& d) { return glm::vec3(grey(d).g, 0.0f, 0.0f); }),
-                                        {daylight_spectrum(6504.0), {}, {}}};
+                                        {daylight_spectrum(6504.0), {}, {}},
+                                        [grey](const glm::dvec3& d) { return glm::dvec3(grey(glm::normalize(d)).g, 0.0, 0.0); }};
     for (size_t k = 1; k < 3; ++k) environment.spectral->spectra[k].assign(environment.spectral->spectra[0].size(), 0.0);
     return environment;
 }

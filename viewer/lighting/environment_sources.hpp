@@ -10,6 +10,7 @@
 // Errors (unknown name, unreadable file, wrong shape) throw fxview::Error naming the source.
 #pragma once
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,6 +48,9 @@ double disc_widened_alpha(double alpha, double angular_radius);
 struct SpectralForm {
     FloatCube weights;                                // RGB: w_0, w_1, w_2
     std::array<std::vector<double>, 3> spectra;       // 360-830 nm at 1 nm; an unused one is zero
+    // The weights towards a direction from the model itself, not the table, the discs sharp: what
+    // ground truths integrate (empty for none).
+    std::function<glm::dvec3(const glm::dvec3&)> exact;
     static constexpr int kFirstNm = 360, kLastNm = 830;
 };
 

@@ -85,6 +85,16 @@ double EnvironmentLookup::spectral_radiance(const glm::dvec3& weights, int nm) c
     return sum;
 }
 
+glm::dvec3 EnvironmentLookup::exact_spectral_weights(const glm::dvec3& world) const {
+    return maps_->unfiltered().spectral->exact(rotation_ * world) * intensity_;
+}
+
+double EnvironmentLookup::exact_spectral_radiance(const glm::dvec3& weights, int nm) const {
+    const auto& spectra = maps_->unfiltered().spectral->spectra;
+    const size_t i = static_cast<size_t>(nm - lighting::SpectralForm::kFirstNm);
+    return weights.x * spectra[0][i] + weights.y * spectra[1][i] + weights.z * spectra[2][i];
+}
+
 glm::dvec3 EnvironmentLookup::unfiltered(const glm::dvec3& world) const {
     return glm::dvec3(lighting::sample_bilinear(maps_->unfiltered().radiance, rotation_ * world)) * intensity_;
 }

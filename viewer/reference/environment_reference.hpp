@@ -31,6 +31,10 @@ public:
     bool spectral() const { return maps_->has_spectral_form(); }
     glm::dvec3 spectral_weights(const glm::dvec3& d, double* seam = nullptr) const;
     double spectral_radiance(const glm::dvec3& weights, int nm) const;
+    // Ground truths: the weights from the environment's model itself (its discs sharp) and the
+    // radiance in double from the spectra as computed, not as the GPU's texture holds them.
+    glm::dvec3 exact_spectral_weights(const glm::dvec3& d) const;
+    double exact_spectral_radiance(const glm::dvec3& weights, int nm) const;
     // The thin-film transforms of its three spectra (environment:fourier); null without a spectral form.
     const spectral::PackedTexture* spectral_fourier() const { return maps_->spectral_fourier(); }
     // The ground truth of ∫ L(l) f(l) (n·l) dl over the unfiltered environment: Monte Carlo with

@@ -65,6 +65,7 @@ struct Reference {
     // itself by Monte Carlo, for `compare --ground-truth`; `seed` varies the sample set per pixel.
     // Empty: the technique is exact up to float rounding.
     std::function<std::array<double, 4>(const ShadingInput&, const ReferenceContext&, unsigned seed)> truth;
+    std::string truth_method = "the Monte Carlo integral";  // what `truth` computes, as compare names it
 };
 
 // The largest change of any colour channel when the pixel's normal turns by `angle` (radians) in

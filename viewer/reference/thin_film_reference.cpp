@@ -235,6 +235,19 @@ double path_difference_slack(const ShadingInput& in, const ReferenceContext& c, 
     });
 }
 
+// The exact sums' setting: every nm of 360-830 with the float CMFs and k = 1 / Σ ȳ, whatever the
+// technique's Lower, Upper, Steps and ByteCmf (its brightness and gamut mapping kept).
+SpectralSetup every_nm_setup(const ReferenceContext& c) {
+    SpectralSetup every_nm = spectral_setup(c);
+    every_nm.cmf = &c.generated("CmfFloat");
+    every_nm.cmf_unit = 1.0;
+    every_nm.lower = spectral::kCmfFirstNm;
+    every_nm.upper = spectral::kCmfLastNm;
+    every_nm.steps = 1;
+    every_nm.k = 0;
+    return every_nm;
+}
+
 // The Fourier techniques (FresnelFourier, BubbleFourier): the interference series in double, its
 // coefficients from optics::film_series (the four Fresnel amplitudes, where the GLSL uses Stokes'
 // relations), each term's F(m D) from the same table the GPU reads, interpolated in double, and the
@@ -258,13 +271,7 @@ std::array<double, 4> fourier_colour(const Film& f, const ReferenceContext& c, o
         for (double& v : xyz) v *= setup.brightness;
         return to_rgba(xyz, setup.mapping);
     }
-    SpectralSetup every_nm = setup;
-    every_nm.cmf = &c.generated("CmfFloat");
-    every_nm.cmf_unit = 1.0;
-    every_nm.lower = spectral::kCmfFirstNm;
-    every_nm.upper = spectral::kCmfLastNm;
-    every_nm.steps = 1;
-    every_nm.k = 0;
+    const SpectralSetup every_nm = every_nm_setup(c);
     const optics::Stack stack{f.n0, {{f.n1, f.thickness}}, substrate};
     return to_rgba(integrate(every_nm, true, [&](int nm) {
         return light_at(f, setup, light, nm) *
@@ -292,6 +299,32 @@ Reference fourier_reference(bool free_film) {
     return r;
 }
 
+// `compare --ground-truth` for the films under a spectral environment (Incidence = view): the
+// physical film the technique stands for (`stack_at`: a single film, a free film, a stack),
+// unpolarised, by characteristic matrices at every nm of 360-830, mirroring the environment's
+// radiance from its model (environment:: exact weights, the sun a sharp disc, the spectra in double)
+// in the mirror direction of the eye at the pixel's centre: independent of the weight cube, its
+// bilinear reads and the techniques' formulas. Deterministic (its two estimates agree).
+using StackAt = std::function<optics::Stack(const Film&, int nm)>;
+
+Reference with_sky_truth(Reference r, StackAt stack_at_nm) {
+    r.truth = [shade = r.shade, stack_at_nm](const ShadingInput& in, const ReferenceContext& c, unsigned) {
+        const Film f = film(in, c);
+        if (!f.sky) return shade(in, c);  // lit by the light spectrum: nothing the reference approximates
+        const glm::dvec3 n = glm::normalize(in.normal), v = glm::normalize(in.camera - in.position);
+        const glm::dvec3 weights = f.environment->exact_spectral_weights(2.0 * glm::dot(n, v) * n - v);
+        const SpectralSetup every_nm = every_nm_setup(c);
+        return to_rgba(integrate(every_nm, true, [&](int nm) {
+            return f.environment->exact_spectral_radiance(weights, nm) * optics::transfer_matrix_reflectance(stack_at_nm(f, nm), nm, f.cos0);
+        }), every_nm.mapping);
+    };
+    r.truth_method = "the exact film mirroring the environment's model (1 nm, characteristic matrices)";
+    return r;
+}
+
+optics::Stack single_film_stack(const Film& f, int) { return optics::Stack{f.n0, {{f.n1, f.thickness}}, optics::Complex(f.n2, f.kappa)}; }
+optics::Stack free_film_stack(const Film& f, int) { return optics::Stack{f.n0, {{f.n1, f.thickness}}, f.n0}; }
+
 }  // namespace
 
 std::map<std::string, Reference> thin_film_references() {
@@ -302,7 +335,7 @@ std::map<std::string, Reference> thin_film_references() {
     path.slack = [phase = path.slack](const ShadingInput& in, const ReferenceContext& c) {
         return phase(in, c) + path_difference_slack(in, c);
     };
-    all.emplace("PathDifference", path);
+    all.emplace("PathDifference", with_sky_truth(path, single_film_stack));
     // The thesis' own Cg (effects/legacy/thinfilm.cgfx) forms the refracted cosine as Code 13 prints
     // it, cos(asin(n0/n1 · sin(acos(c)))): the same value and tolerance as the port, and each pixel's
     // slack what that chain's float error can move (path_difference_slack).
@@ -317,19 +350,19 @@ std::map<std::string, Reference> thin_film_references() {
 
     const Reflectance durikovic =
         per_wavelength([](const Film& f, double nm) { return optics::thesis::durikovic(f.n0, f.n1, f.n2, f.thickness, nm, f.cos0); });
-    all.emplace("Fresnel", make(durikovic, 5e-5, kPhaseWhy));
-    all.emplace("FresnelFaster", make(durikovic, 5e-5, kPhaseWhy));
-    all.emplace("FresnelAlternative", make(per_wavelength([](const Film& f, double nm) {
+    all.emplace("Fresnel", with_sky_truth(make(durikovic, 5e-5, kPhaseWhy), single_film_stack));
+    all.emplace("FresnelFaster", with_sky_truth(make(durikovic, 5e-5, kPhaseWhy), single_film_stack));
+    all.emplace("FresnelAlternative", with_sky_truth(make(per_wavelength([](const Film& f, double nm) {
         return optics::thesis::alternative(f.n0, f.n1, f.n2, f.thickness, nm, f.cos0);
-    }), 5e-5, kPhaseWhy));
-    all.emplace("FabryPerot", make(per_wavelength([](const Film& f, double nm) {
+    }), 5e-5, kPhaseWhy), single_film_stack));
+    all.emplace("FabryPerot", with_sky_truth(make(per_wavelength([](const Film& f, double nm) {
         return optics::thesis::fabry_perot(f.n0, f.n1, f.thickness, nm, f.cos0);
-    }), 1e-4, kFinesseWhy));
+    }), 1e-4, kFinesseWhy), free_film_stack));
 
     // Exact models against characteristic matrices.
     const Reflectance single_film =
         by_matrices([](const Film& f) { return optics::Stack{f.n0, {{f.n1, f.thickness}}, optics::Complex(f.n2, f.kappa)}; });
-    all.emplace("FresnelExact", make(single_film, 5e-5, kPhaseWhy));
+    all.emplace("FresnelExact", with_sky_truth(make(single_film, 5e-5, kPhaseWhy), single_film_stack));
     // Bump mapping (eq. 69): the same film under a wave-tilted normal, thickened at the crests.
     Reference bump = make(single_film, 5e-5, kPhaseWhy, bumped_film);
     // The GPU reduces the wave's phase f·uv to one period in float; its rounding (an ulp of f·u, 1e-6
@@ -352,17 +385,18 @@ std::map<std::string, Reference> thin_film_references() {
         return slack + phase(in, c);
     };
     all.emplace("BumpFresnelExact", std::move(bump));
-    all.emplace("Bubble", make(by_matrices([](const Film& f) { return optics::Stack{f.n0, {{f.n1, f.thickness}}, f.n0}; }), 1e-4, kFinesseWhy));
+    all.emplace("Bubble", with_sky_truth(make(by_matrices([](const Film& f) { return free_film_stack(f, 0); }), 1e-4, kFinesseWhy), free_film_stack));
     // With dispersion the indices, and so the angles, change with the wavelength: one stack per nm.
     const Reflectance fixed_stack = by_matrices([](const Film& f) { return f.stack; });
     const Reflectance dispersive_stack =
         per_wavelength([](const Film& f, double nm) { return optics::transfer_matrix_reflectance(stack_at(f, nm), nm, f.cos0); });
-    all.emplace("MultiLayer", make([fixed_stack, dispersive_stack](const Film& f) {
+    const StackAt dispersed = [](const Film& f, int nm) { return stack_at(f, nm); };
+    all.emplace("MultiLayer", with_sky_truth(make([fixed_stack, dispersive_stack](const Film& f) {
         return f.dispersion_a == 0.0 && f.dispersion_b == 0.0 ? fixed_stack(f) : dispersive_stack(f);
-    }, 5e-5, kPhaseWhy));
-    all.emplace("MultiLayerFaster", make(fixed_stack, 5e-5, kPhaseWhy));
-    all.emplace("FresnelFourier", fourier_reference(false));
-    all.emplace("BubbleFourier", fourier_reference(true));
+    }, 5e-5, kPhaseWhy), dispersed));
+    all.emplace("MultiLayerFaster", with_sky_truth(make(fixed_stack, 5e-5, kPhaseWhy), dispersed));
+    all.emplace("FresnelFourier", with_sky_truth(fourier_reference(false), single_film_stack));
+    all.emplace("BubbleFourier", with_sky_truth(fourier_reference(true), free_film_stack));
     return all;
 }
 
