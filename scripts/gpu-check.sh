@@ -53,6 +53,16 @@ for effect in tests/effects/legacy/*.fx tests/effects/legacy/*.cgfx effects/lega
 done
 "$fxview" compare effects/legacy/wavelength.cgfx --sweep --size 24x24 | tail -3 | tee "$out/compare-legacy-thesis.txt" || true
 "$fxview" compare effects/legacy/thinfilm.cgfx -t Fresnel --size 96x96 | tail -1 | tee -a "$out/compare-legacy-thesis.txt" || true
+# Code 13's slack was derived from llvmpipe's acos/asin errors: does the NVIDIA driver stay within it?
+"$fxview" compare effects/legacy/thinfilm.cgfx -t PathDifference --sweep --sweep-random 3 --size 24x24 | tail -3 | tee -a "$out/compare-legacy-thesis.txt" || true
+# Issue #24: LoopByCount follows its parameter live.
+for n in 0 3 10; do "$fxview" render tests/effects/legacy/loop_count.fx --set Count=$n --size 8x8 --out "$out/loop-$n.pfm" || true; done
+# Issue #25: the CD's orders diffracting the studio and the sky, films against their ground truth.
+for environment in studio sky:35; do
+  "$fxview" compare effects/spectral/cd.fx -t Orders --mesh disc --camera-rotate -25,15,0 --environment "$environment" --size 96x96 --json | tee -a "$out/compare-cd-environment.jsonl" || true
+done
+"$fxview" bench effects/spectral/cd.fx --techniques Thesis,Orders --mesh disc --camera-rotate 50,0,0 --light-angle 15 --frames 5 | tee "$out/bench-cd-ceiling.md"
+"$fxview" compare effects/spectral/thinfilm.fx -t BubbleFourier --environment sky:35 --ground-truth --size 96x96 --json | tee "$out/compare-film-truth.jsonl" || true
 # Issue #28: a .brdf's own importance sampling (isFunc) through the NVIDIA driver, and PBR's sampled
 # specular lobe against the CPU split sum and the ground truth.
 "$fxview" brdf-check tests/effects/brdf/explorer/is_func_sampler.brdf --phi-i 0 --json | tee "$out/brdf-check-isfunc.json" || true
