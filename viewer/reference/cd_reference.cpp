@@ -201,6 +201,29 @@ CubeSample mirrored_cube(const ShadingInput& in, const ReferenceContext& c) {
 // `surroundings`: the technique's light from the scene environment (spectral radiance, not times the
 // light spectrum), or none; where it is given and the scene has a spectral environment, the lamp is
 // scaled by Lamp and the stand-in cube map is off.
+// The ground truth of the surroundings through the orders at one wavelength: every propagating
+// order at exactly that wavelength (no bands) mirroring the environment's model (the sky's formula,
+// the sun a sharp disc, the spectra in double).
+double orders_surroundings_exact(const Disc& d, const ReferenceContext& c, const EnvironmentLookup& environment, int nm) {
+    optics::GratingOrderModel model;
+    model.spacing_nm = std::max(c.number("TrackSpacing"), 1.0);
+    model.zero_order = c.number("ZeroOrder");
+    model.pit_fraction = c.number("PitFraction");
+    model.reflectance = c.number("Reflectance");
+    const glm::dvec3 view(glm::dot(d.v, d.across), glm::dot(d.v, d.along), glm::dot(d.v, d.n));
+    if (view.z <= 0) return 0.0;
+    optics::OrderRange range = optics::propagating_orders(view, nm, model.spacing_nm);
+    range.first = std::max(range.first, -kMaxOrder);
+    range.last = std::min(range.last, kMaxOrder);
+    const std::vector<double> efficiencies = optics::order_efficiencies(model, range);
+    double radiance = 0;
+    for (int m = range.first; m <= range.last; ++m)
+        if (const auto l = optics::order_incidence(view, m, nm, model.spacing_nm))
+            radiance += efficiencies[static_cast<size_t>(m - range.first)] *
+                        environment.exact_spectral_radiance(environment.exact_spectral_weights(l->x * d.across + l->y * d.along + l->z * d.n), nm);
+    return radiance;
+}
+
 // Whether a technique diffracts the scene environment (Orders).
 enum class Surroundings { Ignored, Diffracted };
 
@@ -240,6 +263,24 @@ Reference make(Diffraction diffraction, Surroundings surroundings = Surroundings
     };
     // The mirrored cube map is read through sRGB decoding and bilinear weights whose precision GL
     // leaves to the implementation (textured.fx's 4e-3), scaled by its weight.
+    if (surroundings == Surroundings::Diffracted) {
+        // `compare --ground-truth` under a spectral environment: the same lamp and substrate, every
+        // nm of 360-830, and the surroundings without bands from the environment's model.
+        r.truth = [diffraction, shade = r.shade](const ShadingInput& in, const ReferenceContext& c, unsigned) {
+            const std::optional<EnvironmentLookup> environment = surroundings_of(c);
+            if (!environment) return shade(in, c);
+            const SpectralSetup s = every_nm_setup(c);
+            const int light = static_cast<int>(c.number("LightSpectrum")), substrate = static_cast<int>(c.number("SubstrateSpectrum"));
+            const Disc d = disc(in);
+            const double diffuse = std::max(glm::dot(d.n, d.l), 0.0) * c.number("Lamp");
+            return to_rgba(integrate(s, true, [&](int nm) {
+                return spectral::packed_value(*s.spectra, light, nm) *
+                           (diffraction(d, in, c, nm, true).intensity + c.number("SubstrateWeight") * spectral::packed_value(*s.spectra, substrate, nm) * diffuse) +
+                       orders_surroundings_exact(d, c, *environment, nm);
+            }), s.mapping);
+        };
+        r.truth_method = "the orders at every nm mirroring the environment's model (no bands, the sun a sharp disc)";
+    }
     r.tolerance_for = [surroundings](const ReferenceContext& c) {
         const bool stand_in_off = surroundings == Surroundings::Diffracted && surroundings_of(c);
         return 5e-5 + (stand_in_off ? 0.0 : 4e-3 * c.number("EnvironmentWeight"));

@@ -35,4 +35,15 @@ std::array<double, 4> to_rgba(const spectral::Vec3& xyz, int mode) {
     return {rgb[0], rgb[1], rgb[2], 1.0};
 }
 
+SpectralSetup every_nm_setup(const ReferenceContext& c) {
+    SpectralSetup every_nm = spectral_setup(c);
+    every_nm.cmf = &c.generated("CmfFloat");
+    every_nm.cmf_unit = 1.0;
+    every_nm.lower = spectral::kCmfFirstNm;
+    every_nm.upper = spectral::kCmfLastNm;
+    every_nm.steps = 1;
+    every_nm.k = 0;
+    return every_nm;
+}
+
 }  // namespace fxview::reference

@@ -33,6 +33,10 @@ inline double output_scale(const SpectralSetup& s) {
 // Eq. 9's largest absolute row sum: bounds how far any linear sRGB channel moves per unit of XYZ.
 constexpr double kXyzToRgbRowSum = 3.240479 + 1.537150 + 0.498535;
 
+// The exact sums' and ground truths' setting: every nm of 360-830 with the float CMFs and k = 1 / Σ ȳ,
+// whatever the technique's Lower, Upper, Steps and ByteCmf (its brightness and gamut mapping kept).
+SpectralSetup every_nm_setup(const ReferenceContext& c);
+
 // Sum over the sampled wavelengths (every nm, or Lower..Upper in Steps) of weight(nm) * cmf(nm),
 // times k (the user's, or 1 / sum ybar) and the brightness.
 template <typename Weight>

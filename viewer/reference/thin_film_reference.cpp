@@ -235,19 +235,6 @@ double path_difference_slack(const ShadingInput& in, const ReferenceContext& c, 
     });
 }
 
-// The exact sums' setting: every nm of 360-830 with the float CMFs and k = 1 / Σ ȳ, whatever the
-// technique's Lower, Upper, Steps and ByteCmf (its brightness and gamut mapping kept).
-SpectralSetup every_nm_setup(const ReferenceContext& c) {
-    SpectralSetup every_nm = spectral_setup(c);
-    every_nm.cmf = &c.generated("CmfFloat");
-    every_nm.cmf_unit = 1.0;
-    every_nm.lower = spectral::kCmfFirstNm;
-    every_nm.upper = spectral::kCmfLastNm;
-    every_nm.steps = 1;
-    every_nm.k = 0;
-    return every_nm;
-}
-
 // The Fourier techniques (FresnelFourier, BubbleFourier): the interference series in double, its
 // coefficients from optics::film_series (the four Fresnel amplitudes, where the GLSL uses Stokes'
 // relations), each term's F(m D) from the same table the GPU reads, interpolated in double, and the
