@@ -236,6 +236,14 @@ TEST_CASE("LoopByCount=PARAM runs as many passes as the parameter's current valu
         REQUIRE(glGetError() == GL_NO_ERROR);
         CHECK(target.read_color(0).pixel(4, 4)[0] == doctest::Approx(0.1 * count).epsilon(1e-5));
     }
+    // A clear inside the loop body is skipped with its copy: the last iteration's clear and pass remain.
+    render::EffectSession inside(kLegacy + "/loop_clear_inside.fx", load_options(), {});
+    for (const int count : {1, 3, 10}) {
+        CAPTURE(count);
+        inside.values().numbers["Count"] = {static_cast<double>(count)};
+        inside.render(scene::Scene{}, target);
+        CHECK(target.read_color(0).pixel(4, 4)[0] == doctest::Approx(0.1).epsilon(1e-5));
+    }
     // Unrolled once to its UIMax (10); the copies share one GL program.
     const effect::Effect e = effect::load_effect(kLegacy + "/loop_count.fx", load_options());
     REQUIRE(e.techniques[0].passes.size() == 10);
@@ -304,12 +312,23 @@ TEST_CASE("errors name the original file:line, the technique and the pass") {
     } catch (const effect::EffectError& error) {
         CHECK(std::string(error.what()).find("cg_interface.cgfx:2: Cg interfaces are not supported") != std::string::npos);
     }
+    // A name declared twice: an error at the second declaration (glslang crashed on this pair).
     try {
-        effect::load_effect(kLegacy + "/cg_geometry.cgfx", load_options());
-        FAIL("a geometry program was accepted");
+        effect::load_effect(kLegacy + "/duplicate_global.fx", load_options());
+        FAIL("a redeclaration was accepted");
     } catch (const effect::EffectError& error) {
-        CHECK(std::string(error.what()).find("cg_geometry.cgfx:4: Cg geometry programs") != std::string::npos);
+        CHECK(std::string(error.what()).find("duplicate_global.fx:4: 'Tint' is declared twice") != std::string::npos);
     }
+    // A geometry program: skipped with a warning at its line; its technique fails alone.
+    render::EffectSession geometry(kLegacy + "/cg_geometry.cgfx", load_options(), {});
+    CHECK(geometry.technique() == "Plain");
+    bool skipped = false, failed = false;
+    for (const auto& w : geometry.warnings()) {
+        skipped = skipped || w.find("cg_geometry.cgfx:5: warning: Cg geometry program (TRIANGLE") != std::string::npos;
+        failed = failed || w.find("cg_geometry.cgfx:12: error: geometry programs are not supported") != std::string::npos;
+    }
+    CHECK(skipped);
+    CHECK(failed);
     // One technique that does not translate: the effect opens with the other and says why.
     render::EffectSession partial(kLegacy + "/partial.fx", load_options(), {});
     CHECK(partial.technique() == "Good");

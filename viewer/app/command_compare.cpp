@@ -138,6 +138,7 @@ CommandRunner add_compare_command(CLI::App& app) {
             } else {
                 std::printf("%-20s %s  pixels %ld  max %.3g  mean %.3g  8-bit mismatches %ld  tolerance %.3g", r.technique.c_str(),
                             r.pass ? "pass" : "FAIL", r.pixels, r.max_abs_error, r.mean_abs_error, r.mismatched_8bit, r.tolerance);
+                if (r.exceeding > 0) std::printf("  %ld beyond tolerance and slack", r.exceeding);
                 if (r.pixels_within_slack > 0) std::printf("  (%ld pixels within their slack)", r.pixels_within_slack);
                 if (r.pixels == 0) std::printf("  - the mesh covers no pixel: nothing was compared (check the camera and mesh)");
                 std::printf("\n");

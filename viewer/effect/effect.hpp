@@ -124,6 +124,9 @@ struct Pass {
     RenderStates states;
     SourceLocation where;
     std::vector<LoopCondition> runs_if;  // all must hold; empty: always runs
+    // Its clear came from the script before the loop it sits in: when the loop's value skips it,
+    // the next pass that runs clears instead (a clear inside the loop body is skipped with it).
+    bool carries_clear = false;
 };
 
 struct Technique {

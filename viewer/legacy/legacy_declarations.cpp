@@ -137,6 +137,10 @@ bool LegacyParser::parse_variable(const Token& type, const Token& name, bool is_
     global.type = type.text;
     global.name = name.text;
     global.where = at(name);
+    // HLSL refuses a second declaration of a name, and glslang crashes on some (a float4 and a float
+    // of one name grow its global block inconsistently): said here, at the second one.
+    if (const auto [first, added] = declared_.emplace(name.text, global.where); !added)
+        fail(name, "'" + excerpt(name.text) + "' is declared twice (first at " + first->second.str() + ")");
     if (is(peek(), "[")) {
         const Token open = next();
         const Token size = next();

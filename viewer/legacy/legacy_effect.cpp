@@ -92,6 +92,11 @@ bool add_pass(effect::Effect& effect, const LegacySource& source, effect::Techni
     std::vector<StageRequest> requests;
     std::string errors;
     for (const auto& statement : legacy.programs) {
+        if (statement.stage == ShaderStage::Geometry) {
+            errors += statement.where.str() + ": error: geometry programs are not supported (" + excerpt(statement.function) +
+                      "); this technique does not open\n";
+            continue;
+        }
         const FunctionSignature* function = find_function(source, statement);
         if (!function) {
             errors += statement.where.str() + ": error: unknown function '" + excerpt(statement.function) + "' in the compile statement\n";

@@ -41,7 +41,12 @@ LegacySource LegacyParser::parse() {
         } else if (token.kind == TokenKind::Identifier && token.text == "interface") {
             fail(token, "Cg interfaces are not supported");
         } else if (token.kind == TokenKind::Identifier && is_geometry_primitive(token.text)) {
-            fail(token, "Cg geometry programs (" + token.text + " ... with emitVertex, profiles gp4gp/gp5gp) are not supported");
+            // A Cg geometry program: out of the code (glslang cannot read it); a pass that compiles
+            // it fails its technique, and the effect's other techniques open.
+            skip_declaration();
+            blank(token.begin, last_end_);
+            source_.warnings.push_back(at(token).str() + ": warning: Cg geometry program (" + token.text +
+                                       " ..., profiles gp4gp/gp5gp) skipped: fxview has no geometry stage for Cg");
         } else if (token.kind == TokenKind::Identifier && token.text == "struct") {
             skip_declaration();
         } else if (token.kind == TokenKind::Identifier && (token.text == "typedef" || token.text == "cbuffer" || token.text == "tbuffer")) {

@@ -3,6 +3,7 @@
 // the shader compiler must not see. Internal to viewer/legacy: legacy_parser.cpp holds the walk,
 // the values and the techniques, legacy_declarations.cpp the globals and functions.
 #pragma once
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -134,6 +135,7 @@ private:
     // The caps of native effects (parser.cpp): far above any real file, they bound what a hostile one costs.
     static constexpr size_t kMaxGlobals = 4096, kMaxTechniques = 256, kMaxPasses = 256;
     size_t passes_ = 0;
+    std::map<std::string, effect::SourceLocation> declared_;  // top-level variables, for redeclarations
     struct Edit {
         size_t begin, end;
         std::string with;

@@ -78,13 +78,18 @@ void apply_technique_script(effect::Technique& technique, const std::vector<bool
     std::vector<std::string> targets;  // the technique script's current targets
     effect::RenderStates clears;       // its pending Clear / ClearSet* for the next pass
     bool pending_clear = false;
+    size_t pending_clear_depth = 0;  // the loops open when the Clear command came
     // A loop by a parameter is unrolled to the most it allows and its copies carry their iteration.
     struct Loop { size_t command; int left; int count; std::string parameter; };
     std::vector<Loop> loops;
     std::map<std::string, int> uses;
     size_t steps = 0;
+    bool stopped_early = false;
     for (size_t i = 0; i < commands.size(); ++i) {
-        if (++steps > 100000) break;  // loops of loops: bounded work
+        if (++steps > 100000) {  // loops of loops: bounded work
+            stopped_early = true;
+            break;
+        }
         const Command& c = commands[i];
         if (c.key.rfind("rendercolortarget", 0) == 0) {
             set_target(targets, c.key, c.value);
@@ -92,9 +97,11 @@ void apply_technique_script(effect::Technique& technique, const std::vector<bool
             set_clear_value(clears, c.key, c.value, effect);
         } else if (c.key == "clear") {
             pending_clear = true;
+            pending_clear_depth = loops.size();
         } else if (c.key == "pass" || c.key == "scriptexternal") {
             if (ordered.size() >= kMaxPasses) {
                 warnings.push_back(technique.where.str() + ": warning: technique " + technique.name + ": its script runs more than 256 passes; the rest are dropped");
+                stopped_early = true;
                 break;
             }
             effect::Pass pass;
@@ -116,6 +123,7 @@ void apply_technique_script(effect::Technique& technique, const std::vector<bool
             }
             if (const int n = ++uses[pass.name]; n > 1) pass.name += "#" + std::to_string(n);
             if (pending_clear) {
+                pass.carries_clear = loops.size() > pending_clear_depth;
                 pass.states.clear = true;
                 if (!pass.states.clear_color) pass.states.clear_color = clears.clear_color;
                 if (!pass.states.clear_depth) pass.states.clear_depth = clears.clear_depth;
@@ -128,14 +136,24 @@ void apply_technique_script(effect::Technique& technique, const std::vector<bool
         } else if (c.key == "loopbycount") {
             int count = 0;
             std::string parameter;
+            const std::string where = technique.where.str() + ": warning: technique " + technique.name + ": LoopByCount=" + excerpt(c.value);
             if (const effect::Parameter* p = effect.find_parameter(c.value)) {
                 // The user may change it: unrolled to its UIMax, else to at least 16 (and its default).
                 const double largest = p->ui.max ? *p->ui.max
                                                  : std::max(16.0, p->default_value && !p->default_value->numbers.empty() ? p->default_value->numbers[0] : 0.0);
                 count = static_cast<int>(std::clamp(largest, 0.0, static_cast<double>(kMaxLoopCount)));
                 parameter = p->name;
+                if (largest > kMaxLoopCount)
+                    warnings.push_back(where + " runs at most " + std::to_string(kMaxLoopCount) + " times, whatever " + p->name + " says");
+                else if (!p->ui.max)
+                    warnings.push_back(where + ": " + p->name + " has no UIMax; the loop runs at most " + std::to_string(count) + " times");
             } else {
-                try { count = std::stoi(c.value); } catch (const std::exception&) { count = 1; }
+                try {
+                    count = std::stoi(c.value);
+                } catch (const std::exception&) {
+                    warnings.push_back(where + " names no parameter and no number; it runs once");
+                    count = 1;
+                }
             }
             loops.push_back({i, std::clamp(count, 0, kMaxLoopCount), std::clamp(count, 0, kMaxLoopCount), parameter});
             if (loops.back().left == 0) {  // skip the body
@@ -144,7 +162,10 @@ void apply_technique_script(effect::Technique& technique, const std::vector<bool
                 loops.pop_back();
             }
         } else if (c.key == "loopend") {
-            if (loops.empty()) continue;
+            if (loops.empty()) {
+                warnings.push_back(technique.where.str() + ": warning: technique " + technique.name + ": LoopEnd without LoopByCount; ignored");
+                continue;
+            }
             if (--loops.back().left > 0) i = loops.back().command;
             else loops.pop_back();
         } else if (c.key == "renderdepthstenciltarget" || c.key == "loopgetindex") {
@@ -153,7 +174,10 @@ void apply_technique_script(effect::Technique& technique, const std::vector<bool
             warnings.push_back(technique.where.str() + ": warning: technique " + technique.name + ": script command " + excerpt(c.text) + " is not supported and ignored");
         }
     }
-    if (!ordered.empty()) technique.passes = std::move(ordered);
+    if (!loops.empty() && !stopped_early)
+        warnings.push_back(technique.where.str() + ": warning: technique " + technique.name + ": LoopByCount without LoopEnd; its passes run to the end");
+    // Pass= commands decide which passes run, even when a loop of 0 leaves none.
+    technique.passes = std::move(ordered);
 }
 
 bool apply_pass_script(effect::Pass& pass, const std::vector<effect::Annotation>& annotations, const effect::Effect& effect,

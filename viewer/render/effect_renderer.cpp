@@ -1,5 +1,6 @@
 #include "render/effect_renderer.hpp"
 
+#include <optional>
 #include <set>
 
 #include "effect/render_states.hpp"
@@ -15,6 +16,17 @@ bool runs(const effect::Pass& pass, const effect::ParameterValues& values) {
         if (value != values.numbers.end() && !value->second.empty() && value->second[0] < condition.iteration) return false;
     }
     return true;
+}
+
+// Clears the bound framebuffer to the states' ClearSetColor / ClearSetDepth (else the scene's
+// background and depth 1), every channel whatever the pass's masks say.
+void clear_bound_target(const effect::RenderStates& states, const scene::Scene& scene) {
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    const auto color = states.clear_color.value_or(std::array<float, 4>{scene.background.r, scene.background.g, scene.background.b, scene.background.a});
+    glClearColor(color[0], color[1], color[2], color[3]);
+    glClearDepth(states.clear_depth.value_or(1.0f));
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
 }  // namespace
@@ -75,8 +87,14 @@ void EffectRenderer::render(const scene::Scene& scene, const effect::CompiledTec
 
     std::set<const void*> cleared;  // targets cleared this frame: each is cleared before its first pass
     if (!clear_target) cleared.insert(&target);  // the caller draws several objects into one frame
+    // A clear from before a loop whose copies the loop's value skips: the next pass that runs does it.
+    std::optional<effect::RenderStates> carried_clear;
     for (const effect::CompiledPass& pass : technique.passes) {
         const effect::RenderStates& states = pass.pass->states;
+        if (!runs(*pass.pass, values)) {  // a copy of a loop's passes beyond the loop parameter's current value
+            if (states.clear && pass.pass->carries_clear && !carried_clear) carried_clear = states;
+            continue;
+        }
         const void* destination = &target;
         if (states.render_targets.empty()) {
             target.bind_for_drawing();
@@ -86,18 +104,12 @@ void EffectRenderer::render(const scene::Scene& scene, const effect::CompiledTec
             destination = &framebuffer;
             frame.viewport_size = {static_cast<float>(framebuffer.width), static_cast<float>(framebuffer.height)};
         }
-        if (cleared.insert(destination).second || states.clear) {
-            // Clearing must reach every channel and the depth buffer whatever the pass's masks say.
-            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-            glDepthMask(GL_TRUE);
-            const auto color = states.clear_color.value_or(
-                std::array<float, 4>{scene.background.r, scene.background.g, scene.background.b, scene.background.a});
-            glClearColor(color[0], color[1], color[2], color[3]);
-            glClearDepth(states.clear_depth.value_or(1.0f));
-            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        const bool first_use = cleared.insert(destination).second;
+        if (first_use || states.clear || carried_clear) {
+            const effect::RenderStates& clear = states.clear || !carried_clear ? states : *carried_clear;
+            clear_bound_target(clear, scene);
         }
-        // A copy of a loop's passes beyond the loop parameter's current value: only its clear happens.
-        if (!runs(*pass.pass, values)) continue;
+        carried_clear.reset();
         effect::apply_render_states(states);
         if (states.draw_scene) {
             if (!scene_renderer_) scene_renderer_ = std::make_unique<DebugRenderer>();
@@ -140,6 +152,10 @@ void EffectRenderer::render(const scene::Scene& scene, const effect::CompiledTec
             if (uniform.texture_unit >= 0) glBindSampler(static_cast<GLuint>(uniform.texture_unit), 0);
     }
     glUseProgram(0);
+    if (cleared.insert(&target).second) {  // no pass ran into the frame (a loop of 0): it shows the background
+        target.bind_for_drawing();
+        clear_bound_target(carried_clear.value_or(effect::RenderStates{}), scene);
+    }
     effect::apply_render_states({});
     target.resolve();
 }
