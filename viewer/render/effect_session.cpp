@@ -156,7 +156,7 @@ std::string EffectSession::unused_environment_warning(const scene::Environment& 
                "' fills the background but does not light it";
     if (t.reads_only_spectral_environment && !lighting::has_spectral_form(environment.source))
         return path_ + ": warning: the environment '" + environment.source +
-               "' has no spectral form (the built-in sky and studio have one; images not yet); technique '" + technique_ +
+               "' has no spectral form (the built-in sky, studio and furnace have one; images not yet); technique '" + technique_ +
                "' stays lit by its light spectrum, the environment fills the background";
     return "";
 }
