@@ -511,7 +511,11 @@ bool fourier_film_xyz(Film f, vec2 n2, sampler2D table, SeriesLight light, out v
     float decay_s = length(x_s) < 1.0 ? 1.0 / (1.0 - length(x_s)) : 0.0, decay_p = length(x_p) < 1.0 ? 1.0 / (1.0 - length(x_p)) : 0.0;
 
     vec3 white = vec3(0.0);  // F(0) of the light, real
-    for (int k = 0; k < light.count; ++k) white += light.weights[k] * texelFetch(table, ivec2(0, light.row + k * kFourierRowsPerTable), 0).rgb;
+    vec3 centres[3];         // each table's mean frequencies, for the carrier
+    for (int k = 0; k < light.count; ++k) {
+        white += light.weights[k] * texelFetch(table, ivec2(0, light.row + k * kFourierRowsPerTable), 0).rgb;
+        centres[k] = texelFetch(table, ivec2(0, light.row + k * kFourierRowsPerTable + 2), 0).rgb;
+    }
     float brightest = max(white.x, max(white.y, white.z));
     if (!(brightest > 0.0)) return true;  // no light (a black direction of the sky): black
     float path = 2.0 * FilmIndex * f.thickness * cos1;
@@ -534,9 +538,8 @@ bool fourier_film_xyz(Film f, vec2 n2, sampler2D table, SeriesLight light, out v
         }
         vec2 c = c_s + c_p;
         for (int k = 0; k < light.count; ++k) {
-            int row = light.row + k * kFourierRowsPerTable;
             vec3 re, im;
-            sensitivity_at(table, row, texelFetch(table, ivec2(0, row + 2), 0).rgb, float(m) * path, re, im);
+            sensitivity_at(table, light.row + k * kFourierRowsPerTable, centres[k], float(m) * path, re, im);
             xyz += light.weights[k] * 2.0 * (c.x * re - c.y * im);
         }
         c_s = c_mul(c_s, x_s);

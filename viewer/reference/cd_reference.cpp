@@ -86,6 +86,24 @@ Sample grating_sample(const Disc& d, const ShadingInput& in, const ReferenceCont
 // chords to the light's centre by float-sized amounts, for the slack.
 constexpr int kMaxOrder = 32;
 
+// The model's settings from the effect's parameters.
+optics::GratingOrderModel order_model(const ReferenceContext& c) {
+    optics::GratingOrderModel model;
+    model.spacing_nm = std::max(c.number("TrackSpacing"), 1.0);
+    model.zero_order = c.number("ZeroOrder");
+    model.pit_fraction = c.number("PitFraction");
+    model.reflectance = c.number("Reflectance");
+    return model;
+}
+
+// The propagating orders (at most ±kMaxOrder, as the shader) and their efficiencies, index m − first.
+std::pair<optics::OrderRange, std::vector<double>> propagating(const glm::dvec3& view, double wavelength_nm, const optics::GratingOrderModel& model) {
+    optics::OrderRange range = optics::propagating_orders(view, wavelength_nm, model.spacing_nm);
+    range.first = std::max(range.first, -kMaxOrder);
+    range.last = std::min(range.last, kMaxOrder);
+    return {range, optics::order_efficiencies(model, range)};
+}
+
 // The scene environment the orders diffract: one with a spectral form (the sky, the studio), else none.
 std::optional<EnvironmentLookup> surroundings_of(const ReferenceContext& c) {
     std::optional<EnvironmentLookup> environment = EnvironmentLookup::from(c);
@@ -94,17 +112,10 @@ std::optional<EnvironmentLookup> surroundings_of(const ReferenceContext& c) {
 }
 
 double orders_radiance(const Disc& d, const ShadingInput& in, const ReferenceContext& c, int nm, double offset) {
-    optics::GratingOrderModel model;
-    model.spacing_nm = std::max(c.number("TrackSpacing"), 1.0);
-    model.zero_order = c.number("ZeroOrder");
-    model.pit_fraction = c.number("PitFraction");
-    model.reflectance = c.number("Reflectance");
+    const optics::GratingOrderModel model = order_model(c);
     const glm::dvec3 view(glm::dot(d.v, d.across) + offset, glm::dot(d.v, d.along), glm::dot(d.v, d.n));
     if (view.z <= 0) return 0.0;
-    optics::OrderRange range = optics::propagating_orders(view, nm, model.spacing_nm);
-    range.first = std::max(range.first, -kMaxOrder);
-    range.last = std::min(range.last, kMaxOrder);
-    const std::vector<double> efficiencies = optics::order_efficiencies(model, range);
+    const auto [range, efficiencies] = propagating(view, nm, model);
     const double edge = optics::light_edge_chord(std::max(in.light_radius, 0.0) / glm::length(in.light - in.position));
     const double ratio = nm / model.spacing_nm, tracks = std::max(1.0, c.number("Tracks"));
     double radiance = 0;
@@ -115,9 +126,9 @@ double orders_radiance(const Disc& d, const ShadingInput& in, const ReferenceCon
         const glm::dvec3 incidence = l->x * d.across + l->y * d.along + l->z * d.n;
         const double chord = glm::length(incidence - d.l) + offset;
         const double width = ratio / tracks + in.footprint.x + std::abs(m) * ratio * in.footprint.y;
-        radiance += efficiency * optics::sphere_light_radiance(chord, edge, width) * c.number("Lamp");
+        radiance += efficiency * optics::sphere_light_radiance(chord, edge, width);
     }
-    return radiance;
+    return radiance * c.number("Lamp");
 }
 
 // The float error of the directions (normalisations, dot products, the chord's length: a few 1e-7;
@@ -137,11 +148,7 @@ Sample orders_sample(const Disc& d, const ShadingInput& in, const ReferenceConte
 // weight cube's seams (where GL leaves the texel to the implementation).
 spectral::Vec3 orders_surroundings(const Disc& d, const ReferenceContext& c, const SpectralSetup& s, const EnvironmentLookup& environment,
                                    double* slack) {
-    optics::GratingOrderModel model;
-    model.spacing_nm = std::max(c.number("TrackSpacing"), 1.0);
-    model.zero_order = c.number("ZeroOrder");
-    model.pit_fraction = c.number("PitFraction");
-    model.reflectance = c.number("Reflectance");
+    const optics::GratingOrderModel model = order_model(c);
     const int per_band = std::max(static_cast<int>(c.number("EnvironmentBand")) / s.steps, 1);
     const auto at = [&](double offset, double* seams) {
         spectral::Vec3 xyz{};
@@ -160,10 +167,7 @@ spectral::Vec3 orders_surroundings(const Disc& d, const ReferenceContext& c, con
                 ++count;
             }
             const double wavelength = nm_sum / count;
-            optics::OrderRange range = optics::propagating_orders(view, wavelength, model.spacing_nm);
-            range.first = std::max(range.first, -kMaxOrder);
-            range.last = std::min(range.last, kMaxOrder);
-            const std::vector<double> efficiencies = optics::order_efficiencies(model, range);
+            const auto [range, efficiencies] = propagating(view, wavelength, model);
             for (int m = range.first; m <= range.last; ++m) {
                 const auto l = optics::order_incidence(view, m, wavelength, model.spacing_nm);
                 if (!l) continue;
@@ -198,24 +202,14 @@ CubeSample mirrored_cube(const ShadingInput& in, const ReferenceContext& c) {
     return c.sample_cube("Environment", 2.0 * glm::dot(n, v) * n - v);
 }
 
-// `surroundings`: the technique's light from the scene environment (spectral radiance, not times the
-// light spectrum), or none; where it is given and the scene has a spectral environment, the lamp is
-// scaled by Lamp and the stand-in cube map is off.
 // The ground truth of the surroundings through the orders at one wavelength: every propagating
 // order at exactly that wavelength (no bands) mirroring the environment's model (the sky's formula,
 // the sun a sharp disc, the spectra in double).
 double orders_surroundings_exact(const Disc& d, const ReferenceContext& c, const EnvironmentLookup& environment, int nm) {
-    optics::GratingOrderModel model;
-    model.spacing_nm = std::max(c.number("TrackSpacing"), 1.0);
-    model.zero_order = c.number("ZeroOrder");
-    model.pit_fraction = c.number("PitFraction");
-    model.reflectance = c.number("Reflectance");
+    const optics::GratingOrderModel model = order_model(c);
     const glm::dvec3 view(glm::dot(d.v, d.across), glm::dot(d.v, d.along), glm::dot(d.v, d.n));
     if (view.z <= 0) return 0.0;
-    optics::OrderRange range = optics::propagating_orders(view, nm, model.spacing_nm);
-    range.first = std::max(range.first, -kMaxOrder);
-    range.last = std::min(range.last, kMaxOrder);
-    const std::vector<double> efficiencies = optics::order_efficiencies(model, range);
+    const auto [range, efficiencies] = propagating(view, nm, model);
     double radiance = 0;
     for (int m = range.first; m <= range.last; ++m)
         if (const auto l = optics::order_incidence(view, m, nm, model.spacing_nm))
@@ -224,7 +218,9 @@ double orders_surroundings_exact(const Disc& d, const ReferenceContext& c, const
     return radiance;
 }
 
-// Whether a technique diffracts the scene environment (Orders).
+// Whether a technique diffracts the scene environment (Orders): where it does and the scene has a
+// spectral environment, the lamp is scaled by Lamp, the surroundings are added (spectral radiance, not
+// times the light spectrum) and the stand-in cube map is off.
 enum class Surroundings { Ignored, Diffracted };
 
 Reference make(Diffraction diffraction, Surroundings surroundings = Surroundings::Ignored) {

@@ -69,14 +69,12 @@ std::unique_ptr<EffectSession::Loaded> EffectSession::prepare(std::unique_ptr<ef
                 const std::string semantic = to_lower(uniform.parameter->semantic);
                 t.animated = t.animated || semantic == "time" || semantic == "frame";
                 t.sized_light = t.sized_light || semantic == "lightradius";
-                const effect::TextureResource* texture = effect::is_sampler_type(uniform.parameter->type)
-                                                             ? loaded->effect->find_texture(uniform.parameter->texture.empty() ? uniform.parameter->name
-                                                                                                                                : uniform.parameter->texture)
-                                                             : nullptr;
+                if (!effect::is_sampler_type(uniform.parameter->type)) continue;
+                const std::string& texture_name = uniform.parameter->texture.empty() ? uniform.parameter->name : uniform.parameter->texture;
+                const effect::TextureResource* texture = loaded->effect->find_texture(texture_name);
                 if (texture && texture->files.size() == 1 && EnvironmentMaps::is_resource_name(texture->files[0])) {
-                    t.reads_only_spectral_environment = (!t.reads_environment || t.reads_only_spectral_environment) &&
-                                                        EnvironmentMaps::is_spectral_resource_name(texture->files[0]);
                     t.reads_environment = true;
+                    t.reads_rgb_environment = t.reads_rgb_environment || !EnvironmentMaps::is_spectral_resource_name(texture->files[0]);
                 }
             }
         }
@@ -154,7 +152,7 @@ std::string EffectSession::unused_environment_warning(const scene::Environment& 
     if (!t.reads_environment)
         return path_ + ": warning: technique '" + technique_ + "' is lit by the point light only; the environment '" + environment.source +
                "' fills the background but does not light it";
-    if (t.reads_only_spectral_environment && !lighting::has_spectral_form(environment.source))
+    if (!t.reads_rgb_environment && !lighting::has_spectral_form(environment.source))
         return path_ + ": warning: the environment '" + environment.source +
                "' has no spectral form (the built-in sky, studio and furnace have one; images not yet); technique '" + technique_ +
                "' stays lit by its light spectrum, the environment fills the background";

@@ -61,8 +61,8 @@ public:
         bool animated = false;             // a TIME or FRAME semantic is read: the picture changes with time alone
         bool renders_to_textures = false;  // later passes may read neighbouring pixels: no strip-by-strip drawing
         bool sized_light = false;          // the LIGHTRADIUS semantic is read: the light's size shows
-        bool reads_environment = false;    // it samples an "environment:..." texture
-        bool reads_only_spectral_environment = false;  // ... and only the spectral form's
+        bool reads_environment = false;      // it samples an "environment:..." texture
+        bool reads_rgb_environment = false;  // ... one that is not the spectral form's
     };
     const TechniqueTraits& traits(const std::string& technique) const;
     const std::set<std::string>& parameters_read(const std::string& technique) const { return traits(technique).reads; }
