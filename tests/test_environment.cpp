@@ -250,7 +250,7 @@ TEST_CASE("an environment that an effect's shaders do not read is said, never si
     const std::string effects = std::string(FXVIEW_SOURCE_EFFECTS_DIR);
     const std::string out = " --environment sky --size 16x16 --out " + temp_path("unused-environment.png");
     // Said per technique: cd.fx's Orders diffracts the environment, its Thesis and Grating do not.
-    for (const std::string spectral : {"/spectral/cd.fx -t Thesis", "/spectral/cd.fx -t Grating", "/spectral/wavelength.fx"}) {
+    for (const std::string spectral : {"/spectral/cd.fx -t Thesis", "/spectral/cd.fx -t Grating", "/spectral/wavelength.fx -t Constant"}) {
         const Result r = run("render " + effects + spectral + out);
         CHECK(r.exit_code == 0);
         CHECK(r.err.find("is lit by the point light only; the environment 'sky'") != std::string::npos);
@@ -258,7 +258,7 @@ TEST_CASE("an environment that an effect's shaders do not read is said, never si
     // The thin films and the CD's orders take the spectral form of the sky, studio and furnace; an
     // environment without one (an RGB image) is said.
     for (const std::string environment : {"sky", "studio", "furnace"})
-        for (const std::string spectral : {"/spectral/thinfilm.fx", "/spectral/cd.fx -t Orders"}) {
+        for (const std::string spectral : {"/spectral/thinfilm.fx", "/spectral/cd.fx -t Orders", "/spectral/wavelength.fx"}) {
             CAPTURE(environment);
             CAPTURE(spectral);
             CHECK(run("render " + effects + spectral + " --environment " + environment + " --size 16x16 --out " + temp_path("spectral-env.png"))

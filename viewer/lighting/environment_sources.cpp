@@ -107,7 +107,8 @@ Environment make_sky(const Sky& sky, int size) {
     environment.discs.push_back({sun, sun_radius, sun_scale / sun_solid_angle * sun_colour});
     const Environment weight_cube{tabulate(size, 2, [&](const glm::dvec3& d) { return glm::vec3(weights(d), 0.0); }),
                                   {{sun, sun_radius, glm::dvec3(0.0, sun_scale / sun_solid_angle, 0.0)}}, std::nullopt};
-    environment.spectral = SpectralForm{weight_cube.radiance_with_discs(), {daylight_spectrum(12000.0), daylight_spectrum(sky.sun_cct), {}}, {}};
+    environment.spectral = SpectralForm{weight_cube.radiance_with_discs(), {daylight_spectrum(12000.0), daylight_spectrum(sky.sun_cct), {}}, {},
+                                        weight_cube.radiance, weight_cube.discs};
     environment.spectral->spectra[2].assign(environment.spectral->spectra[0].size(), 0.0);
     const double sun_cos = std::cos(sun_radius), sun_radiance = sun_scale / sun_solid_angle;
     environment.spectral->exact = [weights, sun, sun_cos, sun_radiance](const glm::dvec3& d) {
@@ -124,8 +125,10 @@ Environment neutral_environment(int size, int supersampling, const std::function
     Environment environment{tabulate(size, supersampling, grey), {}, std::nullopt};
     environment.spectral = SpectralForm{tabulate(size, supersampling, [&](const glm::dvec3& d) { return glm::vec3(grey(d).g, 0.0f, 0.0f); }),
                                         {daylight_spectrum(6504.0), {}, {}},
-                                        [grey](const glm::dvec3& d) { return glm::dvec3(grey(glm::normalize(d)).g, 0.0, 0.0); }};
+                                        [grey](const glm::dvec3& d) { return glm::dvec3(grey(glm::normalize(d)).g, 0.0, 0.0); },
+                                        FloatCube(0), {}};
     for (size_t k = 1; k < 3; ++k) environment.spectral->spectra[k].assign(environment.spectral->spectra[0].size(), 0.0);
+    environment.spectral->map_weights = environment.spectral->weights;
     return environment;
 }
 

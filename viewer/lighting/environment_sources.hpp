@@ -51,6 +51,10 @@ struct SpectralForm {
     // The weights towards a direction from the model itself, not the table, the discs sharp: what
     // ground truths integrate (empty for none).
     std::function<glm::dvec3(const glm::dvec3&)> exact;
+    // The same apart: the weights without the disc lights, and the discs with their weights as
+    // radiance (lobes wider than a mirror's integrate the small bright discs in closed form).
+    FloatCube map_weights;
+    std::vector<DiscLight> discs;
     static constexpr int kFirstNm = 360, kLastNm = 830;
 };
 

@@ -72,7 +72,10 @@ CubeSample sample_cube(const texture::TextureData& t, const effect::SamplerState
         return texel(t, srgb, ni, nj, n.face);
     };
     CubeSample result;
-    result.value = (1 - a) * (1 - b) * tap(i0, j0) + a * (1 - b) * tap(i0 + 1, j0) + (1 - a) * b * tap(i0, j0 + 1) + a * b * tap(i0 + 1, j0 + 1);
+    const glm::dvec4 t00 = tap(i0, j0), t10 = tap(i0 + 1, j0), t01 = tap(i0, j0 + 1), t11 = tap(i0 + 1, j0 + 1);
+    result.value = (1 - a) * (1 - b) * t00 + a * (1 - b) * t10 + (1 - a) * b * t01 + a * b * t11;
+    const glm::dvec4 footprint = glm::max(glm::max(t00, t10), glm::max(t01, t11)) - glm::min(glm::min(t00, t10), glm::min(t01, t11));
+    result.footprint_spread = std::max({footprint.r, footprint.g, footprint.b, footprint.a});
     const auto outside = [size](int k) { return k < 0 || k >= size; };
     if (!((outside(i0) || outside(i0 + 1)) && (outside(j0) || outside(j0 + 1)))) return result;
     // At a cube corner one tap has no unique neighbour and GL leaves its value to the implementation

@@ -24,6 +24,10 @@ struct CubeSample {
     // At a cube corner, where GL leaves the texel of the missing neighbour to the implementation, the
     // largest spread (max - min per channel) of the texels around; else 0.
     double seam_spread = 0;
+    // The spread (max - min per channel, the largest) of the texels a linear filter mixed: GL filters
+    // with an implementation's sub-texel precision (llvmpipe: 8 bits), which moves the value by up
+    // to this over 256.
+    double footprint_spread = 0;
 };
 
 // Samples a cube map in `direction` by GL's face selection (spec table 8.19) and the base level's

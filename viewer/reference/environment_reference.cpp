@@ -6,8 +6,20 @@
 
 #include "brdf/microfacet.hpp"
 #include "lighting/image_based_lighting.hpp"
+#include "lighting/lobe_mass.hpp"
 
 namespace fxview::reference {
+
+namespace {
+
+// A tangent frame about unit `axis` (Duff et al. 2017), as environment_spectral_lobes.glsl builds it.
+void duff_frame(const glm::dvec3& axis, glm::dvec3& x, glm::dvec3& y) {
+    const double s = axis.z >= 0.0 ? 1.0 : -1.0, a = -1.0 / (s + axis.z), b = axis.x * axis.y * a;
+    x = glm::dvec3(1.0 + s * axis.x * axis.x * a, s * b, -s * axis.x);
+    y = glm::dvec3(b, s + axis.y * axis.y * a, -axis.y);
+}
+
+}  // namespace
 
 std::optional<EnvironmentLookup> EnvironmentLookup::from(const ReferenceContext& c) {
     const render::EnvironmentMaps* maps = c.resources.environment();
@@ -34,8 +46,8 @@ glm::dvec3 EnvironmentLookup::radiance(const glm::dvec3& world, double roughness
 glm::dvec3 EnvironmentLookup::lobe_radiance(const glm::dvec3& n, const glm::dvec3& v, const glm::dvec3& f0, double roughness, double* seam) const {
     constexpr int kSamples = 16;
     const double alpha = std::max(roughness * roughness, 1e-4), nv = std::max(glm::dot(n, v), 1e-4);
-    const double s = n.z >= 0.0 ? 1.0 : -1.0, a = -1.0 / (s + n.z), b = n.x * n.y * a;  // Duff et al. 2017
-    const glm::dvec3 x(1.0 + s * n.x * n.x * a, s * b, -s * n.x), y(b, s + n.y * n.y * a, -n.y);
+    glm::dvec3 x, y;
+    duff_frame(n, x, y);
     glm::dvec3 sum(0.0), total(0.0);
     double spread = 0.0;
     for (int i = 0; i < kSamples; ++i) {
@@ -93,6 +105,102 @@ double EnvironmentLookup::exact_spectral_radiance(const glm::dvec3& weights, int
     const auto& spectra = maps_->unfiltered().spectral->spectra;
     const size_t i = static_cast<size_t>(nm - lighting::SpectralForm::kFirstNm);
     return weights.x * spectra[0][i] + weights.y * spectra[1][i] + weights.z * spectra[2][i];
+}
+
+glm::dvec3 EnvironmentLookup::spectral_irradiance(const glm::dvec3& n, double* seam) const {
+    effect::SamplerState linear;
+    linear.min_filter = linear.mag_filter = GL_LINEAR;
+    const CubeSample w = sample_cube(maps_->spectral_irradiance_data(), linear, false, rotation_ * n);
+    if (seam) *seam = (w.seam_spread + w.footprint_spread / 256.0) * intensity_;
+    return glm::dvec3(w.value) * intensity_;
+}
+
+glm::dvec3 EnvironmentLookup::spectral_highlight(const glm::dvec3& n, const glm::dvec3& v, bool blinn, double power, double* seam) const {
+    const int samples = power >= 64.0 ? 32 : power >= 8.0 ? 64 : 128;  // spectral_lobe_samples()
+    constexpr double kPi = std::numbers::pi;
+    effect::SamplerState linear;
+    linear.min_filter = linear.mag_filter = GL_LINEAR;
+    // As the GPU: no level coarser than 8² a face (every texel of a smaller one touches a corner).
+    const double size = maps_->spectral_lobe_level(0).width();
+    const double last = std::min<double>(maps_->spectral_lobe_levels() - 1, std::max(std::log2(size / 8.0), 0.0));
+    const glm::dvec3 axis = blinn ? n : 2.0 * glm::dot(n, v) * n - v;
+    glm::dvec3 x, y;
+    duff_frame(axis, x, y);
+    glm::dvec3 sum(0.0);
+    double spread = 0.0, total = 0.0;
+    for (int i = 0; i < samples; ++i) {
+        const glm::dvec2 u = lighting::hammersley(static_cast<unsigned>(i), samples);
+        const double cosine = std::pow(1.0 - u.x, 1.0 / (power + 1.0)), sine = std::sqrt(std::max(0.0, 1.0 - cosine * cosine));
+        const glm::dvec3 direction = sine * std::cos(2.0 * kPi * u.y) * x + sine * std::sin(2.0 * kPi * u.y) * y + cosine * axis;
+        double density = (power + 1.0) / (2.0 * kPi) * std::pow(cosine, power), weight = 1.0;
+        glm::dvec3 l = direction;
+        if (blinn) {
+            const double vh = glm::dot(v, direction);
+            if (vh <= 0.0) continue;
+            l = 2.0 * vh * direction - v;
+            density /= 4.0 * vh;
+            weight = 4.0 * vh;
+        }
+        if (glm::dot(n, l) <= 0.0 || !(density > 0.0)) continue;
+        // The level whose texels cover the sample's share of the sphere, one coarser; two mixed.
+        const double share = 1.0 / (samples * density);
+        const double lod = std::clamp(0.5 * std::log2(share * 6.0 * size * size / (4.0 * kPi)) + 1.0, 0.0, last), low = std::floor(lod);
+        const glm::dvec3 d = rotation_ * l;
+        const CubeSample p = sample_cube(maps_->spectral_lobe_level(static_cast<int>(low)), linear, false, d);
+        const CubeSample q = sample_cube(maps_->spectral_lobe_level(static_cast<int>(std::min(low + 1.0, last))), linear, false, d);
+        sum += weight * glm::mix(glm::dvec3(p.value), glm::dvec3(q.value), lod - low);
+        const double mixed = lod - low;
+        spread += weight * (std::max(p.seam_spread, q.seam_spread) + ((1.0 - mixed) * p.footprint_spread + mixed * q.footprint_spread) / 256.0);
+        total += weight;
+    }
+    // The lobe's mass above the surface (the table, as the GPU samples it) times the mean under it.
+    const glm::dvec3 mass = maps_->lobe_mass().lookup(glm::dot(n, v), lighting::lobe_mass_row(power));
+    const double scale = total > 0.0 ? (blinn ? mass.y : mass.x) * lighting::lobe_mass_unit(power) / total * intensity_ : 0.0;
+    if (seam) *seam = spread * scale;
+    // The disc lights: 16 points of equal area over each (a sunflower spiral), in environment space.
+    const glm::dvec3 ne = rotation_ * n, ve = rotation_ * v, re = 2.0 * glm::dot(ne, ve) * ne - ve;
+    const double golden = kPi * (3.0 - std::sqrt(5.0));
+    glm::dvec3 discs(0.0);
+    for (const lighting::DiscLight& disc : maps_->unfiltered().spectral->discs) {
+        glm::dvec3 dx, dy;
+        duff_frame(disc.direction, dx, dy);
+        double lobe = 0.0;
+        for (int j = 0; j < 16; ++j) {
+            const double r = std::sqrt((j + 0.5) / 16.0) * disc.angular_radius, angle = golden * j;
+            const glm::dvec3 l = glm::normalize(disc.direction + std::tan(r) * (std::cos(angle) * dx + std::sin(angle) * dy));
+            if (glm::dot(ne, l) <= 0.0) continue;
+            lobe += std::pow(std::max(blinn ? glm::dot(ne, glm::normalize(l + ve)) : glm::dot(re, l), 0.0), power);
+        }
+        discs += disc.radiance * disc.solid_angle() * lobe / 16.0;
+    }
+    return sum * scale + discs / kPi * intensity_;
+}
+
+glm::dvec3 EnvironmentLookup::exact_spectral_integral(const std::function<double(const glm::dvec3&)>& g, const Draw& draw, int samples, unsigned seed) const {
+    const glm::dmat3 to_world = glm::transpose(rotation_);
+    const auto& discs = maps_->unfiltered().discs;
+    const auto in_disc = [&](const glm::dvec3& l) {
+        for (const lighting::DiscLight& disc : discs)
+            if (glm::dot(l, to_world * disc.direction) >= std::cos(disc.angular_radius)) return true;
+        return false;
+    };
+    // The Hammersley set turned per pixel (Cranley-Patterson rotation by the seed's two numbers).
+    const double shift_u = (seed % 9973u) / 9973.0, shift_v = (seed / 9973u % 9967u) / 9967.0;
+    glm::dvec3 sum(0.0);
+    for (int i = 0; i < samples; ++i) {
+        const glm::dvec2 h = lighting::hammersley(static_cast<unsigned>(i), static_cast<unsigned>(samples));
+        double density = 0.0;
+        const glm::dvec3 l = draw({std::fmod(h.x + shift_u, 1.0), std::fmod(h.y + shift_v, 1.0)}, density);
+        if (!(density > 0.0) || in_disc(l)) continue;
+        const double value = g(l);
+        if (value != 0.0) sum += value / density * exact_spectral_weights(l);
+    }
+    sum /= static_cast<double>(samples);
+    for (const lighting::DiscLight& disc : discs) {
+        const std::vector<glm::dvec3> points = disc.quadrature(to_world * disc.direction);
+        for (const glm::dvec3& l : points) sum += g(l) * exact_spectral_weights(l) * disc.solid_angle() / static_cast<double>(points.size());
+    }
+    return sum / std::numbers::pi;
 }
 
 glm::dvec3 EnvironmentLookup::unfiltered(const glm::dvec3& world) const {

@@ -35,6 +35,17 @@ public:
     // radiance in double from the spectra as computed, not as the GPU's texture holds them.
     glm::dvec3 exact_spectral_weights(const glm::dvec3& d) const;
     double exact_spectral_radiance(const glm::dvec3& weights, int nm) const;
+    // environment_spectral_lobes.glsl: the weights of E(n)/π from the cosine-convolved cube, and the
+    // (1/π)-scaled integral of a Phong lobe about the mirror direction of v or a Blinn lobe of exponent
+    // `power` by its 32 to 128 filtered directions. `seam` gets how far GL's filtering leaves the weights open:
+    // the spread at cube corners and the footprints' spread over 256 (sub-texel precision).
+    glm::dvec3 spectral_irradiance(const glm::dvec3& n, double* seam = nullptr) const;
+    glm::dvec3 spectral_highlight(const glm::dvec3& n, const glm::dvec3& v, bool blinn, double power, double* seam = nullptr) const;
+    // Ground truth of (1/π) ∫ g(l) w(l) dl over the model's exact weights: `samples` directions drawn by
+    // `draw` (a direction and its density for a point of the unit square; a Hammersley set turned by
+    // `seed`), none inside a disc light, each disc by its 512-point quadrature.
+    using Draw = std::function<glm::dvec3(const glm::dvec2& u, double& density)>;
+    glm::dvec3 exact_spectral_integral(const std::function<double(const glm::dvec3&)>& g, const Draw& draw, int samples, unsigned seed) const;
     // The thin-film transforms of its three spectra (environment:fourier); null without a spectral form.
     const spectral::PackedTexture* spectral_fourier() const { return maps_->spectral_fourier(); }
     // The ground truth of ∫ L(l) f(l) (n·l) dl over the unfiltered environment: Monte Carlo with

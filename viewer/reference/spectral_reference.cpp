@@ -3,18 +3,107 @@
 // Lambert and (modified-free) Phong/Blinn lobes; the tristimulus values are the CMF-weighted sum
 // normalised by k = 1 / sum ybar (or the user's k); eq. 9 maps XYZ to linear sRGB.
 // The spectra and CMFs are read from the same packed textures the GPU samples (so 8-bit storage
-// is quantised alike); everything else is double precision.
+// is quantised alike); everything else is double precision. Under an environment with a spectral
+// form the surroundings add their light, read as environment_spectral_lobes.glsl reads it; the ground
+// truth integrates the environment's model over the sphere instead, every nm.
 #include "reference/spectral_reference.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <numbers>
+#include <optional>
 
+#include "reference/environment_reference.hpp"
 #include "reference/spectral_integration.hpp"
 #include "spectral/level_of_detail.hpp"
 
 namespace fxview::reference {
 namespace {
+
+constexpr double kPi = std::numbers::pi;
+// GL filters with limited sub-texel precision (llvmpipe: 8 bits): a bilinear weight may be off by
+// 1/512 of the difference of neighbouring texels. Measured under the sky, studio and furnace: see make().
+constexpr double kEnvironmentTolerance = 1e-3;
+
+// The environment's light on the surface as weights of its three spectra: the diffuse part (times Kd,
+// to be multiplied by the object's spectrum) and the highlight (times Ks). Absent without a spectral form.
+struct Surroundings {
+    EnvironmentLookup environment;
+    glm::dvec3 diffuse{0.0}, highlight{0.0};
+    double seam = 0.0;  // how far GL's filtering leaves the weights open (cube corners, sub-texel precision)
+    bool exact = false;  // the ground truth's: the model's spectra in double
+    double at(const glm::dvec3& weights, int nm) const {
+        return exact ? environment.exact_spectral_radiance(weights, nm) : environment.spectral_radiance(weights, nm);
+    }
+};
+
+// A unit direction about `axis` at polar cosine `cosine` and azimuth 2π u (Duff et al.'s frame, as the GPU).
+glm::dvec3 about(const glm::dvec3& axis, double cosine, double u) {
+    const double s = axis.z >= 0.0 ? 1.0 : -1.0, a = -1.0 / (s + axis.z), b = axis.x * axis.y * a;
+    const glm::dvec3 x(1.0 + s * axis.x * axis.x * a, s * b, -s * axis.x), y(b, s + axis.y * axis.y * a, -axis.y);
+    const double sine = std::sqrt(std::max(0.0, 1.0 - cosine * cosine));
+    return sine * std::cos(2.0 * kPi * u) * x + sine * std::sin(2.0 * kPi * u) * y + cosine * axis;
+}
+
+// lobe: 0 none, 1 Phong, 2 Blinn. `truth_seed`: the ground truth (the model's weights, 2048 directions
+// per lobe drawn as the lobe, the sun by quadrature) instead of the GPU's tables.
+std::optional<Surroundings> surroundings(const ShadingInput& in, const ReferenceContext& c, int lobe, const unsigned* truth_seed = nullptr) {
+    std::optional<EnvironmentLookup> environment = EnvironmentLookup::from(c);
+    if (!environment || !environment->spectral()) return std::nullopt;
+    Surroundings s{*environment};
+    const glm::dvec3 n = glm::normalize(in.normal), v = glm::normalize(in.camera - in.position), r = 2.0 * glm::dot(n, v) * n - v;
+    const double power = c.number("Power");
+    if (!truth_seed) {
+        double seam_diffuse = 0.0, seam_highlight = 0.0;
+        s.diffuse = c.number("Kd") * environment->spectral_irradiance(n, &seam_diffuse);
+        if (lobe != 0) s.highlight = c.number("Ks") * environment->spectral_highlight(n, v, lobe == 2, power, &seam_highlight);
+        s.seam = c.number("Kd") * seam_diffuse + c.number("Ks") * seam_highlight;
+        return s;
+    }
+    constexpr int kSamples = 2048;
+    s.exact = true;
+    s.diffuse = c.number("Kd") * environment->exact_spectral_integral(
+                                     [&](const glm::dvec3& l) { return std::max(glm::dot(n, l), 0.0); },
+                                     [&](const glm::dvec2& u, double& density) {
+                                         const double cosine = std::sqrt(1.0 - u.x);
+                                         density = cosine / kPi;
+                                         return about(n, cosine, u.y);
+                                     },
+                                     kSamples, *truth_seed);
+    if (lobe == 1)
+        s.highlight = c.number("Ks") * environment->exact_spectral_integral(
+                                           [&](const glm::dvec3& l) { return glm::dot(n, l) > 0.0 ? std::pow(std::max(glm::dot(r, l), 0.0), power) : 0.0; },
+                                           [&](const glm::dvec2& u, double& density) {
+                                               const double cosine = std::pow(1.0 - u.x, 1.0 / (power + 1.0));
+                                               density = (power + 1.0) / (2.0 * kPi) * std::pow(cosine, power);
+                                               return about(r, cosine, u.y);
+                                           },
+                                           kSamples, *truth_seed + 1u);
+    if (lobe == 2)
+        s.highlight = c.number("Ks") * environment->exact_spectral_integral(
+                                           [&](const glm::dvec3& l) {
+                                               return glm::dot(n, l) > 0.0 ? std::pow(std::max(glm::dot(n, glm::normalize(l + v)), 0.0), power) : 0.0;
+                                           },
+                                           [&](const glm::dvec2& u, double& density) {
+                                               const double cosine = std::pow(1.0 - u.x, 1.0 / (power + 1.0));
+                                               const glm::dvec3 h = about(n, cosine, u.y);
+                                               const double vh = glm::dot(v, h);
+                                               density = vh > 0.0 ? (power + 1.0) / (2.0 * kPi) * std::pow(cosine, power) / (4.0 * vh) : 0.0;
+                                               return 2.0 * vh * h - v;
+                                           },
+                                           kSamples, *truth_seed + 2u);
+    return s;
+}
+
+// How far the linear output may move from the surroundings' seams.
+double seam_slack(const SpectralSetup& s, const Surroundings& env) {
+    SpectralSetup unlit = s;
+    unlit.brightness = 1.0;
+    return colour_uncertainty(unlit, [&](int nm) {
+        return env.seam * (std::abs(env.at({1, 0, 0}, nm)) + std::abs(env.at({0, 1, 0}, nm)) + std::abs(env.at({0, 0, 1}, nm)));
+    });
+}
 
 struct Lobes {
     double lambert = 0, phong = 0, blinn = 0;
@@ -36,112 +125,146 @@ Lobes lobes(const ShadingInput& in, double power, double rounding = 0.0) {
     return lobes;
 }
 
-// Diffuse (kd * cos) and specular weights with the light and object spectra of the library.
-// A highlight's slack: what turning the normal by a few ulps changes (its flanks), plus what the
-// float rounding of the lobe's base, raised to the power, changes (its peak, where the first is 0).
+// The lamp's part: kd cos θ and the highlight lobe times ks, and the library spectra of light and
+// object (-1: a constant 1, the Constant techniques).
+struct Lamp {
+    double diffuse = 0, specular = 0;
+    int light = -1, object = -1;
+};
+
+Lamp lamp(const ShadingInput& in, const ReferenceContext& c, int lobe /* 0 none, 1 Phong, 2 Blinn */, double rounding, bool constant_spectra) {
+    const Lobes l = lobes(in, c.number("Power"), rounding);
+    Lamp lamp;
+    lamp.diffuse = c.number("Kd") * l.lambert;
+    lamp.specular = lobe == 0 ? 0.0 : c.number("Ks") * (lobe == 1 ? l.phong : l.blinn);
+    if (!constant_spectra) {
+        lamp.light = static_cast<int>(c.number("LightSpectrum"));
+        lamp.object = static_cast<int>(c.number("ObjectSpectrum"));
+    }
+    return lamp;
+}
+
+double spectrum(const SpectralSetup& s, int index, int nm) { return index < 0 ? 1.0 : spectral::packed_value(*s.spectra, index, nm); }
+
+// Which light a sum takes: all of it, the object-coloured body, or the highlight (Code 11 converts
+// the last two to RGB apart).
+enum class Part { Whole, Body, Highlight };
+
+// Brightness · light (object · diffuse + specular) + the surroundings' object · E + H, summed against
+// the CMFs; `metal`: the highlights object-coloured too.
+spectral::Vec3 lit(const SpectralSetup& s, bool every_nm, const Lamp& lamp, const std::optional<Surroundings>& env, Part part, bool metal = false) {
+    SpectralSetup unlit = s;
+    unlit.brightness = 1.0;
+    return integrate(unlit, every_nm, [&](int nm) {
+        const double light = spectrum(s, lamp.light, nm) * s.brightness, object = spectrum(s, lamp.object, nm);
+        const double diffuse = env ? env->at(env->diffuse, nm) : 0.0, highlight = env ? env->at(env->highlight, nm) : 0.0;
+        const double body = object * (light * lamp.diffuse + diffuse), shine = (metal ? object : 1.0) * (light * lamp.specular + highlight);
+        return part == Part::Body ? body : part == Part::Highlight ? shine : body + shine;
+    });
+}
+
+// A technique's colour from its lamp and surroundings (whether the sums take every nm, which lobe,
+// Code 11's composition: `split` adds body and highlight in RGB unless `metal`).
+struct Technique {
+    int lobe = 0;
+    bool constant_spectra = false, every_nm = false, split = false;
+};
+
+std::array<double, 4> colour(const SpectralSetup& s, bool every_nm, const Lamp& l, const std::optional<Surroundings>& env, const Technique& t,
+                             const ReferenceContext& c) {
+    if (!t.split || c.number("Metal") != 0.0) return to_rgba(lit(s, every_nm, l, env, Part::Whole, t.split), s.mapping);
+    const auto body = to_rgba(lit(s, every_nm, l, env, Part::Body), s.mapping), highlight = to_rgba(lit(s, every_nm, l, env, Part::Highlight), s.mapping);
+    return {body[0] + highlight[0], body[1] + highlight[1], body[2] + highlight[2], 1.0};
+}
+
+// The reference from `shade` (the technique's sums; `rounding` as lobes() takes it): its slack the
+// highlight's sensitivity plus the surroundings' seams; its ground truth the technique's model with
+// every nm and the surroundings integrated over the environment's model.
 using LobeShader = std::function<std::array<double, 4>(const ShadingInput&, const ReferenceContext&, double rounding)>;
 
-std::function<double(const ShadingInput&, const ReferenceContext&)> highlight_slack(const LobeShader& shade) {
-    return [shade](const ShadingInput& in, const ReferenceContext& c) {
-        const Shader exact = [&shade](const ShadingInput& i, const ReferenceContext& context) { return shade(i, context, 0.0); };
-        const std::array<double, 4> at = exact(in, c), rounded = shade(in, c, 2.4e-7);
-        double change = 0;
-        for (size_t i = 0; i < 3; ++i) change = std::max(change, std::abs(rounded[i] - at[i]));
-        return change + normal_sensitivity(exact, in, c);
-    };
-}
-
-Reference from_lobe_shader(const LobeShader& shade) {
+Reference make(const LobeShader& shade, const Technique& t) {
     Reference r;
     r.shade = [shade](const ShadingInput& in, const ReferenceContext& c) { return shade(in, c, 0.0); };
-    r.slack = highlight_slack(shade);
-    return r;
-}
-
-Reference shaded(int specular_lobe /* 0 none, 1 Phong, 2 Blinn */, bool constant_spectra, bool every_nm) {
-    Reference r = from_lobe_shader([=](const ShadingInput& in, const ReferenceContext& c, double rounding) {
-        const SpectralSetup s = spectral_setup(c);
-        const int light_index = static_cast<int>(c.number("LightSpectrum")), object_index = static_cast<int>(c.number("ObjectSpectrum"));
-        const Lobes lobe = lobes(in, c.number("Power"), rounding);
-        const double diffuse = c.number("Kd") * lobe.lambert;
-        const double specular = specular_lobe == 0 ? 0.0 : c.number("Ks") * (specular_lobe == 1 ? lobe.phong : lobe.blinn);
-        const auto xyz = integrate(s, every_nm, [&](int nm) {
-            const double light = constant_spectra ? 1.0 : spectral::packed_value(*s.spectra, light_index, nm);
-            const double object = constant_spectra ? 1.0 : spectral::packed_value(*s.spectra, object_index, nm);
-            return light * (object * diffuse + specular);
-        });
-        return to_rgba(xyz, s.mapping);
-    });
-    if (specular_lobe == 0) r.slack = nullptr;
+    r.slack = [shade, t](const ShadingInput& in, const ReferenceContext& c) {
+        double change = 0;
+        if (t.lobe != 0) {
+            // A highlight's slack: what turning the normal by a few ulps changes (its flanks), plus what
+            // the float rounding of the lobe's base, raised to the power, changes (its peak).
+            const Shader exact = [&shade](const ShadingInput& i, const ReferenceContext& context) { return shade(i, context, 0.0); };
+            const std::array<double, 4> at = exact(in, c), rounded = shade(in, c, 2.4e-7);
+            for (size_t i = 0; i < 3; ++i) change = std::max(change, std::abs(rounded[i] - at[i]));
+            change += normal_sensitivity(exact, in, c);
+        }
+        const std::optional<Surroundings> env = t.constant_spectra ? std::nullopt : surroundings(in, c, t.lobe);
+        return change + (env ? seam_slack(spectral_setup(c), *env) : 0.0);
+    };
+    if (!t.constant_spectra)
+        r.truth = [t](const ShadingInput& in, const ReferenceContext& c, unsigned seed) {
+            return colour(every_nm_setup(c), true, lamp(in, c, t.lobe, 0.0, false), surroundings(in, c, t.lobe, &seed), t, c);
+        };
+    r.truth_method = "the lamp and the environment's model integrated over the sphere (2048 directions per lobe, the sun by quadrature), every nm";
     r.tolerance = 5e-5;
     r.why = "float32 on the GPU against double here: a sum of up to 471 products (rounding about 1e-6 of the "
             "result in practice) and pow() of the specular lobe in float; measured on llvmpipe at most 9e-6, "
             "5e-5 leaves room for other drivers' pow/exp; in a highlight, the change that turning the normal by "
-            "1e-6 rad, or the lobe's base by 2.4e-7 relative before pow(), causes is the pixel's slack";
+            "1e-6 rad, or the lobe's base by 2.4e-7 relative before pow(), causes is the pixel's slack; under an "
+            "environment, the spread of the weight texels at cube corners too";
+    r.tolerance_for = [](const ReferenceContext& c) {
+        // Under an environment: GL filters with limited sub-texel precision (llvmpipe 8 bits): a bilinear
+        // weight may be off by 1/512, of the difference of neighbouring weight texels.
+        return 5e-5 * output_gain(spectral_setup(c), 2.0) + (c.environment && !c.environment->source.empty() ? kEnvironmentTolerance : 0.0);
+    };
     return r;
+}
+
+Reference shaded(const Technique& t) {
+    return make([t](const ShadingInput& in, const ReferenceContext& c, double rounding) {
+        const std::optional<Surroundings> env = t.constant_spectra ? std::nullopt : surroundings(in, c, t.lobe);
+        return colour(spectral_setup(c), t.every_nm, lamp(in, c, t.lobe, rounding, t.constant_spectra), env, t, c);
+    }, t);
 }
 
 }  // namespace
 
 std::map<std::string, Reference> spectral_references() {
     std::map<std::string, Reference> all;
-    all.emplace("Constant", shaded(0, true, false));
-    all.emplace("ConstantUnoptimised", shaded(0, true, false));
-    all.emplace("Lambert", shaded(0, false, false));
-    all.emplace("Single", shaded(0, false, false));
-    all.emplace("Phong", shaded(1, false, false));
-    all.emplace("Blinn", shaded(2, false, false));
-    all.emplace("Combined", shaded(0, false, true));
-
+    all.emplace("Constant", shaded({0, true, false}));
+    all.emplace("ConstantUnoptimised", shaded({0, true, false}));
+    all.emplace("Lambert", shaded({0, false, false}));
+    all.emplace("Single", shaded({0, false, false}));
+    all.emplace("Phong", shaded({1, false, false}));
+    all.emplace("Blinn", shaded({2, false, false}));
+    all.emplace("Combined", shaded({0, false, true}));
     // Code 11's metal switch as the thesis' text has it: a metal's highlight has the object's colour,
     // a dielectric's the light's (the listing swaps the branches).
-    Reference phong_metal = from_lobe_shader([](const ShadingInput& in, const ReferenceContext& c, double rounding) {
-        const SpectralSetup s = spectral_setup(c);
-        const int light_index = static_cast<int>(c.number("LightSpectrum")), object_index = static_cast<int>(c.number("ObjectSpectrum"));
-        const Lobes lobe = lobes(in, c.number("Power"), rounding);
-        const double diffuse = c.number("Kd") * lobe.lambert, specular = c.number("Ks") * lobe.phong;
-        const auto light = [&](int nm) { return spectral::packed_value(*s.spectra, light_index, nm); };
-        const auto object = [&](int nm) { return spectral::packed_value(*s.spectra, object_index, nm); };
-        if (c.number("Metal") == 0.0) {
-            const auto body = to_rgba(integrate(s, true, [&](int nm) { return light(nm) * object(nm) * diffuse; }), s.mapping);
-            const auto highlight = to_rgba(integrate(s, true, [&](int nm) { return light(nm) * specular; }), s.mapping);
-            return std::array<double, 4>{body[0] + highlight[0], body[1] + highlight[1], body[2] + highlight[2], 1.0};
-        }
-        return to_rgba(integrate(s, true, [&](int nm) { return light(nm) * object(nm) * (diffuse + specular); }), s.mapping);
-    });
-    phong_metal.tolerance = 5e-5;
-    phong_metal.why = all.at("Phong").why;
-    all.emplace("CombinedPhong", std::move(phong_metal));
+    all.emplace("CombinedPhong", shaded({1, false, true, true}));
 
-    // Level of detail (ch. 4.6): CMFs and spectra linearly interpolated between support points
-    // every 2^(9 - level) nm; every nm of the range enters the sum.
-    Reference lod = from_lobe_shader([](const ShadingInput& in, const ReferenceContext& c, double rounding) {
+    // Level of detail (ch. 4.6): CMFs, spectra and the surroundings' spectra linearly interpolated
+    // between support points every 2^(9 - level) nm; every nm of the range enters the sum.
+    all.emplace("LodPhong", make([](const ShadingInput& in, const ReferenceContext& c, double rounding) {
         const SpectralSetup s = spectral_setup(c);
-        const int light_index = static_cast<int>(c.number("LightSpectrum")), object_index = static_cast<int>(c.number("ObjectSpectrum"));
         const int spacing = spectral::lod_spacing(std::clamp(static_cast<int>(c.number("LodLevel")), 1, spectral::kLodLevels));
-        const Lobes lobe = lobes(in, c.number("Power"), rounding);
-        const double diffuse = c.number("Kd") * lobe.lambert, specular = c.number("Ks") * lobe.phong;
-        const auto at_support = [&](const std::function<double(int)>& f, int nm) {
-            return spectral::lod_interpolated(f, nm, s.lower, s.upper, spacing);
-        };
+        const Lamp l = lamp(in, c, 1, rounding, false);
+        const std::optional<Surroundings> env = surroundings(in, c, 1);
+        const auto at_support = [&](const std::function<double(int)>& f, int nm) { return spectral::lod_interpolated(f, nm, s.lower, s.upper, spacing); };
         spectral::Vec3 xyz{0, 0, 0};
         double ybar = 0;
         for (int nm = s.lower; nm <= s.upper; ++nm) {
-            const double light = at_support([&](int at) { return spectral::packed_value(*s.spectra, light_index, at); }, nm);
-            const double object = at_support([&](int at) { return spectral::packed_value(*s.spectra, object_index, at); }, nm);
+            const double light = at_support([&](int at) { return spectrum(s, l.light, at); }, nm);
+            const double object = at_support([&](int at) { return spectrum(s, l.object, at); }, nm);
+            const double diffuse = env ? at_support([&](int at) { return env->at(env->diffuse, at); }, nm) : 0.0;
+            const double highlight = env ? at_support([&](int at) { return env->at(env->highlight, at); }, nm) : 0.0;
+            const double weight = light * (object * l.diffuse + l.specular) * s.brightness + object * diffuse + highlight;
             for (int i = 0; i < 3; ++i) {
                 const double cmf = at_support([&](int at) { return spectral::cmf_value(*s.cmf, s.observer, at)[i] * s.cmf_unit; }, nm);
-                xyz[i] += light * (object * diffuse + specular) * cmf;
+                xyz[i] += weight * cmf;
                 if (i == 1) ybar += cmf;
             }
         }
-        const double k = (s.k > 0 ? s.k : 1.0 / ybar) * s.brightness;
+        const double k = s.k > 0 ? s.k : 1.0 / ybar;
         for (double& v : xyz) v *= k;
         return to_rgba(xyz, s.mapping);
-    });
-    lod.tolerance = 5e-5;
-    lod.why = all.at("Phong").why;
-    all.emplace("LodPhong", std::move(lod));
+    }, {1, false, false}));
     return all;
 }
 

@@ -205,7 +205,7 @@ EffectResources::EffectResources(const effect::Effect& effect, const effect::Par
             if (resource.files.size() == 1 && resource.files[0].rfind("environment:", 0) == 0) {
                 if (!EnvironmentMaps::is_resource_name(resource.files[0]))
                     throw effect::EffectError(resource.where, "unknown environment texture '" + resource.files[0] +
-                                                                  "' (environment:specular, environment:irradiance, environment:dfg, environment:spectral-weights, environment:spectra or environment:fourier)");
+                                                                  "' (environment:specular, environment:irradiance, environment:dfg, environment:lobe-mass, environment:spectral-weights, environment:spectral-irradiance, environment:spectral-lobe-weights, environment:spectral-discs, environment:spectra or environment:fourier)");
                 environment_resources_.emplace(resource.name, resource.files[0]);
                 continue;
             }

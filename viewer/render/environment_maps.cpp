@@ -4,7 +4,9 @@
 
 #include "core/error.hpp"
 #include "gl/texture_upload.hpp"
+#include "lighting/cosine_convolution.hpp"
 #include "lighting/environment_sources.hpp"
+#include "lighting/lobe_mass.hpp"
 #include "spectral/colorimetry.hpp"
 #include "spectral/fourier_table.hpp"
 
@@ -39,14 +41,28 @@ GpuTexture upload(const texture::TextureData& data, const std::string& source) {
     return gpu;
 }
 
+// A table of (n·v, second coordinate) as a 2D texture: rows top first in TextureData, the table's
+// row j is GL row j from the bottom.
+texture::TextureData table_data(const lighting::DfgTable& t, const std::string& source) {
+    std::vector<float> rgba;
+    for (int j = t.size - 1; j >= 0; --j)
+        for (int i = 0; i < t.size; ++i) {
+            const glm::vec3 value = t.data[static_cast<size_t>(j) * t.size + i];
+            rgba.insert(rgba.end(), {value.x, value.y, value.z, 1.0f});
+        }
+    return {texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(t.size, t.size, rgba)}}, source};
+}
+
 }  // namespace
 
 bool EnvironmentMaps::is_resource_name(const std::string& name) {
-    return name == "environment:specular" || name == "environment:irradiance" || name == "environment:dfg" || is_spectral_resource_name(name);
+    return name == "environment:specular" || name == "environment:irradiance" || name == "environment:dfg" || name == "environment:lobe-mass" ||
+           is_spectral_resource_name(name);
 }
 
 bool EnvironmentMaps::is_spectral_resource_name(const std::string& name) {
-    return name == "environment:spectral-weights" || name == "environment:spectra" || name == "environment:fourier";
+    return name == "environment:spectral-weights" || name == "environment:spectral-irradiance" || name == "environment:spectral-lobe-weights" ||
+           name == "environment:spectral-discs" || name == "environment:spectra" || name == "environment:fourier";
 }
 
 EnvironmentMaps::EnvironmentMaps(const std::string& source, const ResourceLimits& limits) : source_(source) {
@@ -101,14 +117,7 @@ EnvironmentMaps::EnvironmentMaps(const std::string& source, const ResourceLimits
     for (int face = 0; face < 6; ++face) background.faces.push_back({cube_face_level(with_discs, face)});
     background_ = upload(background, background.source);
 
-    // Rows top first in TextureData; the table's row j (roughness (j + ½) / size) is GL row j from the bottom.
-    std::vector<float> table;
-    for (int j = dfg_.size - 1; j >= 0; --j)
-        for (int i = 0; i < dfg_.size; ++i) {
-            const glm::vec3 abg = dfg_.data[static_cast<size_t>(j) * dfg_.size + i];
-            table.insert(table.end(), {abg.x, abg.y, abg.z, 1.0f});
-        }
-    texture::TextureData dfg{texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(dfg_.size, dfg_.size, table)}}, "split-sum DFG table"};
+    const texture::TextureData dfg = table_data(dfg_, "split-sum DFG table");
     dfg_texture_ = upload(dfg, dfg.source);
 
     // The spectral form: its weights as a cube of one level, its spectra as a row of 471 texels (RGB the
@@ -117,6 +126,37 @@ EnvironmentMaps::EnvironmentMaps(const std::string& source, const ResourceLimits
     const lighting::FloatCube no_weights(1);
     for (int face = 0; face < 6; ++face)
         spectral_weights_data_.faces.push_back({cube_face_level(environment_.spectral ? environment_.spectral->weights : no_weights, face)});
+    // For lobes: the weights without the discs in box-filtered levels down to one texel, the discs apart.
+    texture::TextureData lobe_weights{texture::TextureType::Cube, texture::PixelFormat::RGBA32F, {}, specular_data_.source + " (spectral weights without discs)"};
+    lobe_weights.faces.resize(6);
+    std::vector<lighting::FloatCube> chain{environment_.spectral ? environment_.spectral->map_weights : no_weights};
+    while (chain.back().size > 1) chain.push_back(lighting::downsample(chain.back()));
+    for (const lighting::FloatCube& level : chain) {
+        texture::TextureData one{texture::TextureType::Cube, texture::PixelFormat::RGBA32F, {}, lobe_weights.source};
+        for (int face = 0; face < 6; ++face) {
+            lobe_weights.faces[static_cast<size_t>(face)].push_back(cube_face_level(level, face));
+            one.faces.push_back({cube_face_level(level, face)});
+        }
+        spectral_lobe_levels_.push_back(std::move(one));
+    }
+    spectral_lobe_weights_ = upload(lobe_weights, lobe_weights.source);
+    std::vector<float> discs;
+    const std::vector<lighting::DiscLight> no_discs;
+    const std::vector<lighting::DiscLight>& spectral_discs = environment_.spectral ? environment_.spectral->discs : no_discs;
+    if (spectral_discs.size() > kMaxDiscs) throw Error(source + ": more disc lights than the " + std::to_string(kMaxDiscs) + " the GPU tables hold");
+    for (size_t k = 0; k < kMaxDiscs; ++k) {
+        if (k >= spectral_discs.size()) {
+            discs.insert(discs.end(), 8, 0.0f);
+            continue;
+        }
+        const lighting::DiscLight& disc = spectral_discs[k];
+        discs.insert(discs.end(), {static_cast<float>(disc.direction.x), static_cast<float>(disc.direction.y), static_cast<float>(disc.direction.z),
+                                   static_cast<float>(disc.angular_radius), static_cast<float>(disc.radiance.r), static_cast<float>(disc.radiance.g),
+                                   static_cast<float>(disc.radiance.b), static_cast<float>(disc.solid_angle())});
+    }
+    const texture::TextureData disc_table{texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(2 * kMaxDiscs, 1, discs)}},
+                                          specular_data_.source + " (spectral disc lights)"};
+    spectral_discs_ = upload(disc_table, disc_table.source);
     spectral_weights_ = upload(spectral_weights_data_, spectral_weights_data_.source);
     std::vector<float> spectra;
     for (int nm = lighting::SpectralForm::kFirstNm; nm <= lighting::SpectralForm::kLastNm; ++nm) {
@@ -133,8 +173,18 @@ const GpuTexture* EnvironmentMaps::texture(const std::string& name) const {
     if (name == "environment:specular") return &specular_;
     if (name == "environment:irradiance") return &irradiance_;
     if (name == "environment:dfg") return &dfg_texture_;
+    if (name == "environment:lobe-mass") {
+        if (!lobe_mass_texture_) lobe_mass_texture_ = std::make_unique<GpuTexture>(upload(table_data(lobe_mass(), "lobe mass table"), "lobe mass table"));
+        return lobe_mass_texture_.get();
+    }
     if (name == "environment:spectral-weights") return &spectral_weights_;
     if (name == "environment:spectra") return &spectra_;
+    if (name == "environment:spectral-lobe-weights") return &spectral_lobe_weights_;
+    if (name == "environment:spectral-discs") return &spectral_discs_;
+    if (name == "environment:spectral-irradiance") {
+        if (!spectral_irradiance_) spectral_irradiance_ = std::make_unique<GpuTexture>(upload(spectral_irradiance_data(), spectral_irradiance_data().source));
+        return spectral_irradiance_.get();
+    }
     if (name == "environment:fourier") {
         if (!fourier_) {
             // Without a spectral form: one zero texel, as the other textures (nothing samples it then).
@@ -146,6 +196,21 @@ const GpuTexture* EnvironmentMaps::texture(const std::string& name) const {
         return fourier_.get();
     }
     return nullptr;
+}
+
+const lighting::DfgTable& EnvironmentMaps::lobe_mass() const {
+    std::call_once(lobe_mass_made_, [this] { lobe_mass_ = lighting::make_lobe_mass_table(); });
+    return lobe_mass_;
+}
+
+const texture::TextureData& EnvironmentMaps::spectral_irradiance_data() const {
+    std::call_once(spectral_irradiance_made_, [this] {
+        spectral_irradiance_data_ = texture::TextureData{texture::TextureType::Cube, texture::PixelFormat::RGBA32F, {},
+                                                         specular_data_.source + " (spectral weights, cosine-convolved)"};
+        const lighting::FloatCube cube = environment_.spectral ? lighting::cosine_convolved(environment_.spectral->weights) : lighting::FloatCube(1);
+        for (int face = 0; face < 6; ++face) spectral_irradiance_data_.faces.push_back({cube_face_level(cube, face)});
+    });
+    return spectral_irradiance_data_;
 }
 
 const spectral::PackedTexture* EnvironmentMaps::spectral_fourier() const {

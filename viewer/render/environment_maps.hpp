@@ -10,6 +10,15 @@
 //   environment:dfg         2D RGBA32F: (A, B, G) of the split sum per (n·v, roughness), clamped at the edges
 //   environment:spectral-weights  cube map, RGBA32F, one level: the weights of the environment's
 //                           spectral form (lighting::SpectralForm, the built-in sky's), discs drawn in
+//   environment:spectral-irradiance  cube map, RGBA32F, 32², one level: those weights cosine-convolved / π
+//                           (lighting/cosine_convolution.hpp); made on first use
+//   environment:spectral-lobe-weights  cube map, RGBA32F: the weights without the disc lights, level 0
+//                           at kSize, each further level the mean of four texels (filtered sampling)
+//   environment:lobe-mass   64x64 RGBA32F, laid out as the DFG table: the share of the Phong and Blinn
+//                           lobes above the surface per (n·v, log2(power) / 8) (lighting/lobe_mass.hpp);
+//                           made on first use
+//   environment:spectral-discs  8x1 RGBA32F: per disc light (at most kMaxDiscs) its direction and
+//                           angular radius, its weights and solid angle (zero where there is none)
 //   environment:spectra     471x1 RGBA32F: its three spectra at 360-830 nm; alpha 1 where the
 //                           environment has a spectral form, all 0 where it has none
 //   environment:fourier     the thin-film sensitivity transforms of those three spectra under both
@@ -46,6 +55,12 @@ public:
     static bool is_spectral_resource_name(const std::string& name);  // the spectral form's three
     bool has_spectral_form() const { return environment_.spectral.has_value(); }
     const texture::TextureData& spectral_weights_data() const { return spectral_weights_data_; }  // faces[face][0]
+    // environment:spectral-lobe-weights: its number of levels and one level's six faces.
+    int spectral_lobe_levels() const { return static_cast<int>(spectral_lobe_levels_.size()); }
+    const texture::TextureData& spectral_lobe_level(int level) const { return spectral_lobe_levels_.at(static_cast<size_t>(level)); }
+    // environment:spectral-irradiance on the CPU (made on first use, thread-safe); one level, or one
+    // zero texel without a spectral form.
+    const texture::TextureData& spectral_irradiance_data() const;
     // environment:fourier on the CPU (made on first use, thread-safe); nullptr without a spectral form.
     const spectral::PackedTexture* spectral_fourier() const;
 
@@ -53,6 +68,7 @@ public:
     const lighting::PrefilteredEnvironment& prefiltered() const { return prefiltered_; }
     const lighting::Environment& unfiltered() const { return environment_; }  // the radiance and its discs, for ground truths
     const lighting::DfgTable& dfg() const { return dfg_; }
+    const lighting::DfgTable& lobe_mass() const;  // made on first use, thread-safe
     const texture::TextureData& specular_data() const { return specular_data_; }  // faces[face][level], GL rows
     const texture::TextureData& specular_level(int level) const { return specular_levels_.at(static_cast<size_t>(level)); }  // one level's six faces
     // The radiance with the disc lights drawn in, one level: what the background shows.
@@ -66,6 +82,14 @@ private:
     texture::TextureData specular_data_;
     std::vector<texture::TextureData> specular_levels_;
     texture::TextureData spectral_weights_data_;
+    std::vector<texture::TextureData> spectral_lobe_levels_;
+    GpuTexture spectral_lobe_weights_, spectral_discs_;
+    mutable std::once_flag spectral_irradiance_made_;
+    mutable texture::TextureData spectral_irradiance_data_;
+    mutable std::unique_ptr<GpuTexture> spectral_irradiance_;
+    mutable std::once_flag lobe_mass_made_;
+    mutable lighting::DfgTable lobe_mass_;
+    mutable std::unique_ptr<GpuTexture> lobe_mass_texture_;
     GpuTexture specular_, irradiance_, dfg_texture_, background_, spectral_weights_, spectra_;
     // The sky's Fourier tables: the CPU copy for references (any thread), the GL texture for the
     // render thread, each made when first asked for.
