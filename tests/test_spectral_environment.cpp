@@ -101,15 +101,16 @@ TEST_CASE("wavelength.fx in the furnace: a white Lambertian reflects 1, the high
 }
 
 TEST_CASE("wavelength.fx under the sky and the studio matches its CPU reference; a wrong highlight on the CPU side fails") {
-    for (const std::string environment : {"sky", "studio"})
-        for (const std::string technique : {"Phong", "Blinn", "CombinedPhong", "LodPhong", "Combined"}) {
-            CAPTURE(environment);
-            CAPTURE(technique);
-            const app::CompareResult r = app::compare_technique(wavelength(technique, environment, {}), technique, {});
-            CHECK(r.has_reference);
-            CHECK(r.pixels > 300);
-            CHECK(r.pass);
-        }
+    // Every technique under the sky (its sun is a disc light), the two lobes under the studio's soft boxes.
+    for (const auto& [environment, technique] : std::vector<std::pair<std::string, std::string>>{
+             {"sky", "Phong"}, {"sky", "Blinn"}, {"sky", "CombinedPhong"}, {"sky", "LodPhong"}, {"sky", "Combined"}, {"studio", "Phong"}, {"studio", "Blinn"}}) {
+        CAPTURE(environment);
+        CAPTURE(technique);
+        const app::CompareResult r = app::compare_technique(wavelength(technique, environment, {}), technique, {});
+        CHECK(r.has_reference);
+        CHECK(r.pixels > 300);
+        CHECK(r.pass);
+    }
     // The highlight of the sky's sun and dome 5 % brighter on the CPU side only: seen.
     CHECK(!app::compare_technique(wavelength("Phong", "sky", {"Brightness=0"}), "Phong", {"Ks=0.42"}).pass);
     CHECK(!app::compare_technique(wavelength("Lambert", "studio", {"Brightness=0"}), "Lambert", {"Kd=0.84"}).pass);
@@ -131,9 +132,10 @@ TEST_CASE("wavelength.fx under the sky: within CIEDE2000 0.1 of the environment 
 TEST_CASE("the techniques that stay lit by the lamp alone say so under an environment; the others do not") {
     const std::string effect = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/wavelength.fx";
     const std::string out = " --environment sky --size 16x16 --out " + test::temp_path("wavelength-sky.png");
-    for (const std::string technique : {"Constant", "ConstantUnoptimised"})
-        CHECK(test::run("render " + effect + " -t " + technique + out).err.find("is lit by the point light only") != std::string::npos);
-    for (const std::string technique : {"Lambert", "Phong", "Blinn", "Combined", "CombinedPhong", "LodPhong", "Single"}) {
+    // A CLI run each (the rest are proven lit by the compare above: a GPU side that ignored the
+    // environment would miss the CPU reference's share of it).
+    CHECK(test::run("render " + effect + " -t Constant" + out).err.find("is lit by the point light only") != std::string::npos);
+    for (const std::string technique : {"Lambert", "Single"}) {
         CAPTURE(technique);
         const test::Result r = test::run("render " + effect + " -t " + technique + out);
         CHECK(r.exit_code == 0);

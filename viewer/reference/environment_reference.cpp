@@ -116,7 +116,7 @@ glm::dvec3 EnvironmentLookup::spectral_irradiance(const glm::dvec3& n, double* s
 }
 
 glm::dvec3 EnvironmentLookup::spectral_highlight(const glm::dvec3& n, const glm::dvec3& v, bool blinn, double power, double* seam) const {
-    const int samples = power >= 64.0 ? 32 : power >= 8.0 ? 64 : 128;  // spectral_lobe_samples()
+    const int samples = power >= 64.0 ? 32 : power >= 8.0 ? 64 : 256;  // spectral_lobe_samples()
     constexpr double kPi = std::numbers::pi;
     effect::SamplerState linear;
     linear.min_filter = linear.mag_filter = GL_LINEAR;

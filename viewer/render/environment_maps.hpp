@@ -14,8 +14,9 @@
 //                           (lighting/cosine_convolution.hpp); made on first use
 //   environment:spectral-lobe-weights  cube map, RGBA32F: the weights without the disc lights, level 0
 //                           at kSize, each further level the mean of four texels (filtered sampling)
-//   environment:lobe-mass   64x64 RGBA32F, laid out as the DFG table: the share of the Phong and Blinn
-//                           lobes above the surface per (n·v, log2(power) / 8) (lighting/lobe_mass.hpp);
+//   environment:lobe-mass   64x64 RGBA32F, laid out as the DFG table: the mass of the Phong and Blinn
+//                           lobes above the surface per (n·v, log2(power) / 8), in units of 2 / (p + 1)
+//                           (lighting/lobe_mass.hpp);
 //                           made on first use
 //   environment:spectral-discs  8x1 RGBA32F: per disc light (at most kMaxDiscs) its direction and
 //                           angular radius, its weights and solid angle (zero where there is none)
