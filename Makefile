@@ -32,6 +32,7 @@ run: build
 	$(FXVIEW) render effects/examples/textured.fx --technique Mirror --mesh knot --size 512x512 --samples 4 --out out/knot-mirror.png
 	$(FXVIEW) render effects/debug.fx --technique Plain --mesh knot --set PlainColor=#d4a017 --size 512x512 --samples 4 --out out/knot-plain.png
 	$(FXVIEW) render effects/spectral/wavelength.fx --technique Phong --set LightSpectrum=D65 --set ObjectSpectrum=TCS09 --mesh knot --size 512x512 --out out/knot-spectral-phong.png
+	$(FXVIEW) render effects/spectral/wavelength.fx --technique Phong --set ObjectSpectrum=TCS09 --set Brightness=0.5 --environment sky:35 --mesh knot --size 512x512 --out out/knot-spectral-sky.png
 	$(FXVIEW) render effects/spectral/thinfilm.fx --technique Bubble --set Thickness=250 --set Variation=600 --mesh sphere --size 512x512 --out out/sphere-bubble.png
 	$(FXVIEW) render effects/spectral/thinfilm.fx --technique BubbleFourier --set Thickness=300 --set Variation=700 --environment sky:35 --mesh sphere --size 512x512 --out out/sphere-bubble-sky.png
 	$(FXVIEW) render effects/spectral/thinfilm.fx --technique MultiLayerFaster --mesh knot --size 512x512 --out out/knot-multilayer.png

@@ -63,6 +63,12 @@ for environment in studio sky:35; do
 done
 "$fxview" bench effects/spectral/cd.fx --techniques Thesis,Orders --mesh disc --camera-rotate 50,0,0 --light-angle 15 --frames 5 | tee "$out/bench-cd-ceiling.md"
 "$fxview" compare effects/spectral/thinfilm.fx -t BubbleFourier --environment sky:35 --ground-truth --size 96x96 --json | tee "$out/compare-film-truth.jsonl" || true
+# wavelength.fx's lobes under the sky and the studio (filtered importance sampling through the driver's
+# cube filtering) against the CPU reference and the ground truth, and its cost.
+for environment in sky studio; do
+  "$fxview" compare effects/spectral/wavelength.fx --environment "$environment" --ground-truth --size 64x64 --json | tee -a "$out/compare-wavelength-environment.jsonl" || true
+done
+"$fxview" bench effects/spectral/wavelength.fx --techniques Lambert,Phong,Blinn --frames 5 --environment studio | tee "$out/bench-wavelength-studio.md"
 # Issue #28: a .brdf's own importance sampling (isFunc) through the NVIDIA driver, and PBR's sampled
 # specular lobe against the CPU split sum and the ground truth.
 "$fxview" brdf-check tests/effects/brdf/explorer/is_func_sampler.brdf --phi-i 0 --json | tee "$out/brdf-check-isfunc.json" || true
