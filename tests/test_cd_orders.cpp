@@ -123,13 +123,14 @@ TEST_CASE("a sized light that a technique cannot use is said") {
     scene::Scene scene;
     scene.light.radius = 0.5f;
     const std::string effects = FXVIEW_SOURCE_EFFECTS_DIR;
-    const auto wavelength_session = app::open_effect_session(app::EffectOptions{effects + "/spectral/wavelength.fx"});
-    const render::EffectSession& wavelength = *wavelength_session;
-    CHECK(wavelength.unused_light_radius_warning(scene.light).find("wavelength.fx") != std::string::npos);  // names the file
-    const auto warnings = wavelength.scene_warnings(scene);
+    const auto film_session = app::open_effect_session(app::EffectOptions{effects + "/spectral/thinfilm.fx"});
+    const render::EffectSession& film = *film_session;
+    CHECK(film.unused_light_radius_warning(scene.light).find("thinfilm.fx") != std::string::npos);  // names the file
+    const auto warnings = film.scene_warnings(scene);
     REQUIRE(warnings.size() == 1);
     CHECK(warnings.front().find("point") != std::string::npos);
     CHECK(app::open_effect_session(app::EffectOptions{effects + "/spectral/cd.fx"})->scene_warnings(scene).empty());  // Orders, cd.fx's default, reads LIGHTRADIUS
+    CHECK(app::open_effect_session(app::EffectOptions{effects + "/spectral/wavelength.fx"})->scene_warnings(scene).empty());  // a sphere lamp
     scene.light.radius = 0;
-    CHECK(wavelength.scene_warnings(scene).empty());
+    CHECK(film.scene_warnings(scene).empty());
 }

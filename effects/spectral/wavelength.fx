@@ -8,6 +8,7 @@
 #include "standard.glsl"
 #include "spectral.glsl"
 #include "environment_spectral_lobes.glsl"
+#include "sphere_lamp.glsl"
 
 // Indices into spectra/library.txt (`fxview spectra list`).
 uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
@@ -23,13 +24,27 @@ uniform float Power < string UIName = "Specular power"; float UIMin = 1; float U
 uniform bool Metal < string UIName = "Metal"; string UIGroup = "Lighting";
                      string UIHelp = "On: a metal, whose highlight takes the object's colour; off: a dielectric, whose highlight takes the light's colour"; > = false;
 
+uniform float LightRadius : LIGHTRADIUS;  // the scene's lamp as a sphere (`--light-radius`); 0: a point
+
 struct Geometry { float lambert; float phong; float blinn; };
 
-Geometry geometry(vec3 position, vec3 normal) {
+// The lamp's factors: cos θ and the lobes for a point, their means over the disc for a sphere lamp
+// (sphere_lamp.glsl). `lobes` false: the diffuse factor only (the lobes over a disc cost a loop).
+Geometry geometry(vec3 position, vec3 normal, bool lobes) {
     vec3 n = normalize(normal);
     vec3 l = normalize(LightPosition - position);
     vec3 v = normalize(CameraPosition - position);
-    Geometry g;
+    Geometry g = Geometry(0.0, 0.0, 0.0);
+    float sin_alpha = LightRadius > 0.0 ? min(LightRadius / length(LightPosition - position), 0.999) : 0.0;
+    if (sin_alpha > 0.0) {
+        g.lambert = sphere_lamp_lambert(dot(n, l), sin_alpha * sin_alpha);
+        if (lobes) {
+            vec2 both = sphere_lamp_lobes(n, v, l, sin_alpha, Power);
+            g.phong = both.x;
+            g.blinn = both.y;
+        }
+        return g;
+    }
     g.lambert = max(dot(n, l), 0.0);
     g.phong = g.lambert > 0.0 ? pow(max(dot(reflect(-l, n), v), 0.0), Power) : 0.0;
     g.blinn = g.lambert > 0.0 ? pow(max(dot(n, normalize(l + v)), 0.0), Power) : 0.0;
@@ -80,7 +95,7 @@ GLSLShader ConstantFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Geometry g = geometry(fs_in.world_position, fs_in.normal);
+        Geometry g = geometry(fs_in.world_position, fs_in.normal, false);
         color = vec4(xyz_to_srgb(integrate(Kd * g.lambert, 0.0, true, Surroundings(false, vec3(0.0), vec3(0.0)))), 1.0);
         fx_capture();
     }
@@ -95,7 +110,7 @@ GLSLShader ConstantUnoptimisedFS {
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
         for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
-            Geometry g = geometry(fs_in.world_position, fs_in.normal);
+            Geometry g = geometry(fs_in.world_position, fs_in.normal, false);
             vec3 cmf = cmf_at(nm);
             ybar_sum += cmf.y;
             xyz += Kd * g.lambert * cmf;
@@ -110,7 +125,7 @@ GLSLShader LambertFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Geometry g = geometry(fs_in.world_position, fs_in.normal);
+        Geometry g = geometry(fs_in.world_position, fs_in.normal, false);
         Surroundings env = surroundings(fs_in.world_position, fs_in.normal, 0);
         color = vec4(xyz_to_srgb(integrate(Kd * g.lambert, 0.0, false, env)), 1.0);
         fx_capture();
@@ -122,7 +137,7 @@ GLSLShader PhongFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Geometry g = geometry(fs_in.world_position, fs_in.normal);
+        Geometry g = geometry(fs_in.world_position, fs_in.normal, true);
         Surroundings env = surroundings(fs_in.world_position, fs_in.normal, 1);
         color = vec4(xyz_to_srgb(integrate(Kd * g.lambert, Ks * g.phong, false, env)), 1.0);
         fx_capture();
@@ -134,7 +149,7 @@ GLSLShader BlinnFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Geometry g = geometry(fs_in.world_position, fs_in.normal);
+        Geometry g = geometry(fs_in.world_position, fs_in.normal, true);
         Surroundings env = surroundings(fs_in.world_position, fs_in.normal, 2);
         color = vec4(xyz_to_srgb(integrate(Kd * g.lambert, Ks * g.blinn, false, env)), 1.0);
         fx_capture();
@@ -184,7 +199,7 @@ GLSLShader CombinedFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Geometry g = geometry(fs_in.world_position, fs_in.normal);
+        Geometry g = geometry(fs_in.world_position, fs_in.normal, false);
         CombinedSums sums = integrate_combined(surroundings(fs_in.world_position, fs_in.normal, 0));
         color = vec4(xyz_to_srgb(sums.object * Kd * g.lambert + sums.env_body), 1.0);
         fx_capture();
@@ -201,7 +216,7 @@ GLSLShader CombinedPhongFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Geometry g = geometry(fs_in.world_position, fs_in.normal);
+        Geometry g = geometry(fs_in.world_position, fs_in.normal, true);
         CombinedSums sums = integrate_combined(surroundings(fs_in.world_position, fs_in.normal, 1));
         vec3 rgb = Metal ? xyz_to_srgb(sums.object * (Kd * g.lambert + Ks * g.phong) + sums.env_body + sums.env_highlight_object)
                          : xyz_to_srgb(sums.object * Kd * g.lambert + sums.env_body) + xyz_to_srgb(sums.light * Ks * g.phong + sums.env_highlight);
@@ -235,7 +250,7 @@ GLSLShader LodPhongFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Geometry g = geometry(fs_in.world_position, fs_in.normal);
+        Geometry g = geometry(fs_in.world_position, fs_in.normal, true);
         float diffuse = Kd * g.lambert, specular = Ks * g.phong;
         Surroundings env = surroundings(fs_in.world_position, fs_in.normal, 1);
         int spacing = 1 << (9 - clamp(LodLevel, 1, 9));

@@ -159,7 +159,8 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
         double slack = 0;
         std::array<double, 4> truth{}, second_truth{};  // two independent estimates of the integral
     };
-    const bool with_truth = ground_truth && ref->truth && !request.scene.environment.source.empty();
+    const bool with_truth = ground_truth && ref->truth &&
+                            (!request.scene.environment.source.empty() || (ref->truth_with_sized_light && request.scene.light.radius > 0.0f));
     std::vector<Shaded> shaded(static_cast<size_t>(request.width) * static_cast<size_t>(request.height));
     const auto input_at = [&](int x, int y) {
         reference::ShadingInput input;

@@ -7,19 +7,9 @@
 #include "brdf/microfacet.hpp"
 #include "lighting/image_based_lighting.hpp"
 #include "lighting/lobe_mass.hpp"
+#include "reference/tangent_frame.hpp"
 
 namespace fxview::reference {
-
-namespace {
-
-// A tangent frame about unit `axis` (Duff et al. 2017), as environment_spectral_lobes.glsl builds it.
-void duff_frame(const glm::dvec3& axis, glm::dvec3& x, glm::dvec3& y) {
-    const double s = axis.z >= 0.0 ? 1.0 : -1.0, a = -1.0 / (s + axis.z), b = axis.x * axis.y * a;
-    x = glm::dvec3(1.0 + s * axis.x * axis.x * a, s * b, -s * axis.x);
-    y = glm::dvec3(b, s + axis.y * axis.y * a, -axis.y);
-}
-
-}  // namespace
 
 std::optional<EnvironmentLookup> EnvironmentLookup::from(const ReferenceContext& c) {
     const render::EnvironmentMaps* maps = c.resources.environment();

@@ -66,6 +66,8 @@ struct Reference {
     // Empty: the technique is exact up to float rounding.
     std::function<std::array<double, 4>(const ShadingInput&, const ReferenceContext&, unsigned seed)> truth;
     std::string truth_method = "the Monte Carlo integral";  // what `truth` computes, as compare names it
+    // `truth` integrates a sphere light too: it runs without an environment when the light has a size.
+    bool truth_with_sized_light = false;
 };
 
 // The largest change of any colour channel when the pixel's normal turns by `angle` (radians) in

@@ -16,6 +16,8 @@
 
 #include "reference/environment_reference.hpp"
 #include "reference/spectral_integration.hpp"
+#include "reference/sphere_lamp.hpp"
+#include "reference/tangent_frame.hpp"
 #include "spectral/level_of_detail.hpp"
 
 namespace fxview::reference {
@@ -40,8 +42,8 @@ struct Surroundings {
 
 // A unit direction about `axis` at polar cosine `cosine` and azimuth 2π u (Duff et al.'s frame, as the GPU).
 glm::dvec3 about(const glm::dvec3& axis, double cosine, double u) {
-    const double s = axis.z >= 0.0 ? 1.0 : -1.0, a = -1.0 / (s + axis.z), b = axis.x * axis.y * a;
-    const glm::dvec3 x(1.0 + s * axis.x * axis.x * a, s * b, -s * axis.x), y(b, s + axis.y * axis.y * a, -axis.y);
+    glm::dvec3 x, y;
+    duff_frame(axis, x, y);
     const double sine = std::sqrt(std::max(0.0, 1.0 - cosine * cosine));
     return sine * std::cos(2.0 * kPi * u) * x + sine * std::sin(2.0 * kPi * u) * y + cosine * axis;
 }
@@ -105,17 +107,19 @@ double seam_slack(const SpectralSetup& s, const Surroundings& env) {
     });
 }
 
-struct Lobes {
-    double lambert = 0, phong = 0, blinn = 0;
-};
-
+// The lamp's factors cos θ and lobes: at its centre for a point; for a sphere lamp (`--light-radius`)
+// as the GPU averages them over its disc, or (`truth`) integrated over the disc by an independent rule.
 // `rounding`: the relative float error of the lobe's base (a cosine, ~2 ulps) that pow() raises to
 // the power; the slack evaluates the lobes with it.
-Lobes lobes(const ShadingInput& in, double power, double rounding = 0.0) {
+LampFactors lobes(const ShadingInput& in, double power, bool with_lobes, double rounding = 0.0, bool truth = false) {
     const glm::dvec3 n = glm::normalize(in.normal);
     const glm::dvec3 l = glm::normalize(in.light - in.position);
     const glm::dvec3 v = glm::normalize(in.camera - in.position);
-    Lobes lobes;
+    if (in.light_radius > 0.0) {
+        const double sin_alpha = std::min(in.light_radius / glm::length(in.light - in.position), 0.999);
+        return truth ? sphere_lamp_integral(n, v, l, sin_alpha, power) : sphere_lamp_factors(n, v, l, sin_alpha, power, with_lobes, rounding);
+    }
+    LampFactors lobes;
     lobes.lambert = std::max(glm::dot(n, l), 0.0);
     if (lobes.lambert > 0) {
         const glm::dvec3 mirror = 2.0 * glm::dot(n, l) * n - l;  // l reflected about n
@@ -132,8 +136,9 @@ struct Lamp {
     int light = -1, object = -1;
 };
 
-Lamp lamp(const ShadingInput& in, const ReferenceContext& c, int lobe /* 0 none, 1 Phong, 2 Blinn */, double rounding, bool constant_spectra) {
-    const Lobes l = lobes(in, c.number("Power"), rounding);
+Lamp lamp(const ShadingInput& in, const ReferenceContext& c, int lobe /* 0 none, 1 Phong, 2 Blinn */, double rounding, bool constant_spectra,
+          bool truth = false) {
+    const LampFactors l = lobes(in, c.number("Power"), lobe != 0, rounding, truth);
     Lamp lamp;
     lamp.diffuse = c.number("Kd") * l.lambert;
     lamp.specular = lobe == 0 ? 0.0 : c.number("Ks") * (lobe == 1 ? l.phong : l.blinn);
@@ -191,8 +196,8 @@ Reference make(const LobeShader& shade, const Technique& t) {
             // A highlight's slack: what turning the normal by a few ulps changes (its flanks), plus what
             // the float rounding of the lobe's base, raised to the power, changes (its peak).
             const Shader exact = [&shade](const ShadingInput& i, const ReferenceContext& context) { return shade(i, context, 0.0); };
-            const std::array<double, 4> at = exact(in, c), rounded = shade(in, c, 2.4e-7);
-            for (size_t i = 0; i < 3; ++i) change = std::max(change, std::abs(rounded[i] - at[i]));
+            const std::array<double, 4> at = exact(in, c), up = shade(in, c, 2.4e-7), down = shade(in, c, -2.4e-7);
+            for (size_t i = 0; i < 3; ++i) change = std::max({change, std::abs(up[i] - at[i]), std::abs(down[i] - at[i])});
             change += normal_sensitivity(exact, in, c);
         }
         const std::optional<Surroundings> env = t.constant_spectra ? std::nullopt : surroundings(in, c, t.lobe);
@@ -200,9 +205,10 @@ Reference make(const LobeShader& shade, const Technique& t) {
     };
     if (!t.constant_spectra)
         r.truth = [t](const ShadingInput& in, const ReferenceContext& c, unsigned seed) {
-            return colour(every_nm_setup(c), true, lamp(in, c, t.lobe, 0.0, false), surroundings(in, c, t.lobe, &seed), t, c);
+            return colour(every_nm_setup(c), true, lamp(in, c, t.lobe, 0.0, false, true), surroundings(in, c, t.lobe, &seed), t, c);
         };
-    r.truth_method = "the lamp and the environment's model integrated over the sphere (2048 directions per lobe, the sun by quadrature), every nm";
+    r.truth_method = "the lamp and the environment at every nm: a sphere lamp over its disc (128 x 256 points), an environment's model over the sphere (2048 directions per lobe, the sun by quadrature)";
+    r.truth_with_sized_light = true;
     r.tolerance = 5e-5;
     r.why = "float32 on the GPU against double here: a sum of up to 471 products (rounding about 1e-6 of the "
             "result in practice) and pow() of the specular lobe in float; measured on llvmpipe at most 9e-6, "

@@ -162,7 +162,7 @@ std::string EffectSession::unused_environment_warning(const scene::Environment& 
 std::string EffectSession::unused_light_radius_warning(const scene::Light& light) const {
     if (light.radius <= 0.0f || traits(technique_).sized_light) return "";
     return path_ + ": warning: technique '" + technique_ + "' treats the light as a point; its radius " + std::to_string(light.radius) +
-           " changes nothing here (cd.fx's Orders shows a light's size)";
+           " changes nothing here (cd.fx's Orders and wavelength.fx show a light's size)";
 }
 
 std::vector<std::string> EffectSession::scene_warnings(const scene::Scene& scene) const {
