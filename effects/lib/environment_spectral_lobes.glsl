@@ -86,8 +86,8 @@ vec3 spectral_disc_highlight(vec3 n, vec3 v, bool blinn, float power) {
 }
 
 // (1/π) ∫ lobe(l) L(l) dl over the directions above the surface, as weights: the lobe's mass above
-// the surface (tabulated) times the mean weights under it, by filtered importance sampling with 32
-// directions distributed as the lobe (Phong: l about the mirror direction of v; Blinn: h about n,
+// the surface (tabulated) times the mean weights under it, by filtered importance sampling with
+// spectral_lobe_samples() directions distributed as the lobe (Phong: l about the mirror direction of v; Blinn: h about n,
 // l = v reflected about h, each counted by 4 v·h), plus the disc lights. `blinn` picks the lobe,
 // `power` is its exponent.
 vec3 spectral_environment_highlight(vec3 n, vec3 v, bool blinn, float power) {

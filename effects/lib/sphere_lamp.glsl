@@ -30,9 +30,11 @@ float sphere_lamp_lambert(float cos_theta, float sin2_alpha) {
 }
 
 // Points on the disc: enough that neighbours lie within half the lobe's width (1/√p) of each other
-// (sin α for α: a driver's asin is less exact than the count's steps need).
-int sphere_lamp_points(float sin_alpha, float power) {
-    return int(clamp(ceil(4.0 * 3.14159265358979323846 * sin_alpha * sin_alpha * power), 32.0, 256.0));
+// (sin α for α: a driver's asin is less exact than the count's steps need); 128 at least where the
+// horizon crosses the disc (cos²θ < sin²α), whose cut 32 points would follow in steps of 3 %.
+int sphere_lamp_points(float sin_alpha, float cos_theta, float power) {
+    float fewest = cos_theta * cos_theta < sin_alpha * sin_alpha ? 128.0 : 32.0;
+    return int(clamp(ceil(4.0 * 3.14159265358979323846 * sin_alpha * sin_alpha * power), fewest, 256.0));
 }
 
 // The lobes averaged over the lamp's disc around unit direction `l` (points of equal solid angle on a
@@ -42,7 +44,7 @@ vec2 sphere_lamp_lobes(vec3 n, vec3 v, vec3 l, float sin_alpha, float power) {
     const float pi = 3.14159265358979323846, golden = pi * (3.0 - sqrt(5.0));
     // 1 - cos α as sin²α / (1 + cos α): exact in float for small lamps too.
     float cos_alpha = sqrt(max(1.0 - sin_alpha * sin_alpha, 0.0)), versine = sin_alpha * sin_alpha / (1.0 + cos_alpha);
-    int count = sphere_lamp_points(sin_alpha, power);
+    int count = sphere_lamp_points(sin_alpha, dot(n, l), power);
     float s = l.z >= 0.0 ? 1.0 : -1.0, a = -1.0 / (s + l.z), b = l.x * l.y * a;  // Duff et al.'s frame
     vec3 x = vec3(1.0 + s * l.x * l.x * a, s * b, -s * l.x), y = vec3(b, s + l.y * l.y * a, -l.y);
     vec2 sum = vec2(0.0);

@@ -69,11 +69,17 @@ double prefiltered_roughness(int level, int levels) {
 double prefiltered_lod(double roughness, int levels) { return std::sqrt(std::clamp(roughness, 0.0, 1.0)) * (levels - 1); }
 
 PrefilteredEnvironment prefilter(const Environment& environment, int levels, int samples) {
-    PrefilteredEnvironment out;
+    PrefilteredEnvironment out = prefilter_irradiance(environment);
+    out.specular = prefilter_specular(environment, levels, samples);
+    return out;
+}
+
+std::vector<FloatCube> prefilter_specular(const Environment& environment, int levels, int samples) {
+    std::vector<FloatCube> out;
     const FloatCube& radiance = environment.radiance;
     std::vector<FloatCube> chain{radiance};
     while (chain.back().size > 1) chain.push_back(downsample(chain.back()));
-    out.specular.push_back(radiance);
+    out.push_back(radiance);
     const double texel_angle = 4.0 * kPi / (6.0 * radiance.size * radiance.size);
     for (int level = 1; level < levels; ++level) {
         const double roughness = prefiltered_roughness(level, levels), alpha = roughness * roughness;
@@ -108,8 +114,14 @@ PrefilteredEnvironment prefilter(const Environment& environment, int levels, int
                     }
             });
         workers.clear();
-        out.specular.push_back(std::move(cube));
+        out.push_back(std::move(cube));
     }
+    return out;
+}
+
+PrefilteredEnvironment prefilter_irradiance(const Environment& environment) {
+    PrefilteredEnvironment out;
+    const FloatCube& radiance = environment.radiance;
     // SH projection with exact texel solid angles, then the cosine convolution (Ramamoorthi-Hanrahan);
     // the discs apart, in closed form.
     std::array<glm::dvec3, 9> projection{};

@@ -38,6 +38,9 @@ double prefiltered_lod(double roughness, int levels);
 // radiance). The discs are in none of the levels: shading adds them in closed form (disc_lighting.hpp),
 // which no prefiltered lobe centred as if n = v = r can do for a source this small and bright.
 PrefilteredEnvironment prefilter(const Environment& environment, int levels, int samples = 128);
+// Its two parts apart (the specular levels cost seconds; spectral effects need only the SH):
+std::vector<FloatCube> prefilter_specular(const Environment& environment, int levels, int samples = 128);
+PrefilteredEnvironment prefilter_irradiance(const Environment& environment);  // `specular` left empty
 
 // E(n) / π for SH coefficients of prefilter(): the radiance a white Lambertian surface reflects.
 glm::dvec3 evaluate_irradiance(const std::array<glm::vec3, 9>& sh, const glm::dvec3& n);

@@ -39,7 +39,8 @@ LampFactors sphere_lamp_factors(const glm::dvec3& n, const glm::dvec3& v, const 
     // The GPU's float may land on either side of a step of the count: `rounding` moves it as far (10
     // ulps) so that the slack sees both.
     const double wanted = 4.0 * kPi * sin2 * power * (1.0 + 10.0 * rounding);
-    const int count = static_cast<int>(std::clamp(std::ceil(wanted), 32.0, 256.0));
+    const double fewest = cos_theta * cos_theta * (1.0 + 10.0 * rounding) < sin2 ? 128.0 : 32.0;  // the horizon crosses the disc
+    const int count = static_cast<int>(std::clamp(std::ceil(wanted), fewest, 256.0));
     glm::dvec3 x, y;
     duff_frame(l, x, y);
     glm::dvec2 sum(0.0);

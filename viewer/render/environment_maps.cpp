@@ -66,28 +66,16 @@ bool EnvironmentMaps::is_spectral_resource_name(const std::string& name) {
 }
 
 EnvironmentMaps::EnvironmentMaps(const std::string& source, const ResourceLimits& limits) : source_(source) {
+    label_ = source.empty() ? "no environment" : source;
     if (source.empty()) {
         environment_.radiance = lighting::FloatCube(1);
-        prefiltered_.specular.assign(1, lighting::FloatCube(1));
         prefiltered_.irradiance.fill(glm::vec3(0.0f));
         dfg_.size = 1;
         dfg_.data.assign(1, glm::vec3(0.0f));
     } else {
         environment_ = lighting::make_environment(source, kSize, limits);
-        prefiltered_ = lighting::prefilter(environment_, kLevels);
+        prefiltered_ = lighting::prefilter_irradiance(environment_);  // the specular levels when first asked for
         dfg_ = lighting::make_dfg_table(kDfgSize);
-    }
-    specular_data_.type = texture::TextureType::Cube;
-    specular_data_.format = texture::PixelFormat::RGBA32F;
-    specular_data_.source = source.empty() ? "no environment" : source;
-    specular_data_.faces.resize(6);
-    for (int face = 0; face < 6; ++face)
-        for (const auto& level : prefiltered_.specular) specular_data_.faces[static_cast<size_t>(face)].push_back(cube_face_level(level, face));
-    specular_ = upload(specular_data_, specular_data_.source + " (prefiltered)");
-    for (size_t level = 0; level < prefiltered_.specular.size(); ++level) {
-        texture::TextureData one{texture::TextureType::Cube, texture::PixelFormat::RGBA32F, {}, specular_data_.source};
-        for (const auto& face : specular_data_.faces) one.faces.push_back({face[level]});
-        specular_levels_.push_back(std::move(one));
     }
 
     std::vector<float> sh;
@@ -109,10 +97,10 @@ EnvironmentMaps::EnvironmentMaps(const std::string& source, const ResourceLimits
         }
     }
     texture::TextureData irradiance{texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(9 + 2 * kMaxDiscs, 1, sh)}},
-                                    specular_data_.source + " (SH irradiance, disc lights)"};
+                                    label_ + " (SH irradiance, disc lights)"};
     irradiance_ = upload(irradiance, irradiance.source);
 
-    texture::TextureData background{texture::TextureType::Cube, texture::PixelFormat::RGBA32F, {}, specular_data_.source + " (background)"};
+    texture::TextureData background{texture::TextureType::Cube, texture::PixelFormat::RGBA32F, {}, label_ + " (background)"};
     const lighting::FloatCube with_discs = environment_.radiance_with_discs();
     for (int face = 0; face < 6; ++face) background.faces.push_back({cube_face_level(with_discs, face)});
     background_ = upload(background, background.source);
@@ -122,12 +110,12 @@ EnvironmentMaps::EnvironmentMaps(const std::string& source, const ResourceLimits
 
     // The spectral form: its weights as a cube of one level, its spectra as a row of 471 texels (RGB the
     // three spectra, alpha 1 where the environment has the form; all zero where it has none).
-    spectral_weights_data_ = texture::TextureData{texture::TextureType::Cube, texture::PixelFormat::RGBA32F, {}, specular_data_.source + " (spectral weights)"};
+    spectral_weights_data_ = texture::TextureData{texture::TextureType::Cube, texture::PixelFormat::RGBA32F, {}, label_ + " (spectral weights)"};
     const lighting::FloatCube no_weights(1);
     for (int face = 0; face < 6; ++face)
         spectral_weights_data_.faces.push_back({cube_face_level(environment_.spectral ? environment_.spectral->weights : no_weights, face)});
     // For lobes: the weights without the discs in box-filtered levels down to one texel, the discs apart.
-    texture::TextureData lobe_weights{texture::TextureType::Cube, texture::PixelFormat::RGBA32F, {}, specular_data_.source + " (spectral weights without discs)"};
+    texture::TextureData lobe_weights{texture::TextureType::Cube, texture::PixelFormat::RGBA32F, {}, label_ + " (spectral weights without discs)"};
     lobe_weights.faces.resize(6);
     std::vector<lighting::FloatCube> chain{environment_.spectral ? environment_.spectral->map_weights : no_weights};
     while (chain.back().size > 1) chain.push_back(lighting::downsample(chain.back()));
@@ -155,7 +143,7 @@ EnvironmentMaps::EnvironmentMaps(const std::string& source, const ResourceLimits
                                    static_cast<float>(disc.radiance.b), static_cast<float>(disc.solid_angle())});
     }
     const texture::TextureData disc_table{texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(2 * kMaxDiscs, 1, discs)}},
-                                          specular_data_.source + " (spectral disc lights)"};
+                                          label_ + " (spectral disc lights)"};
     spectral_discs_ = upload(disc_table, disc_table.source);
     spectral_weights_ = upload(spectral_weights_data_, spectral_weights_data_.source);
     std::vector<float> spectra;
@@ -165,12 +153,15 @@ EnvironmentMaps::EnvironmentMaps(const std::string& source, const ResourceLimits
         spectra.push_back(environment_.spectral ? 1.0f : 0.0f);
     }
     const int count = lighting::SpectralForm::kLastNm - lighting::SpectralForm::kFirstNm + 1;
-    texture::TextureData row{texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(count, 1, spectra)}}, specular_data_.source + " (spectra)"};
+    texture::TextureData row{texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(count, 1, spectra)}}, label_ + " (spectra)"};
     spectra_ = upload(row, row.source);
 }
 
 const GpuTexture* EnvironmentMaps::texture(const std::string& name) const {
-    if (name == "environment:specular") return &specular_;
+    if (name == "environment:specular") {
+        if (!specular_) specular_ = std::make_unique<GpuTexture>(upload(specular_data(), label_ + " (prefiltered)"));
+        return specular_.get();
+    }
     if (name == "environment:irradiance") return &irradiance_;
     if (name == "environment:dfg") return &dfg_texture_;
     if (name == "environment:lobe-mass") {
@@ -191,11 +182,37 @@ const GpuTexture* EnvironmentMaps::texture(const std::string& name) const {
             const spectral::PackedTexture* table = spectral_fourier();
             const texture::TextureData none{texture::TextureType::Tex2D, texture::PixelFormat::RGBA32F, {{float_level(1, 1, {0, 0, 0, 0})}},
                                             "no spectral environment"};
-            fourier_ = std::make_unique<GpuTexture>(upload(table ? table->texture : none, specular_data_.source + " (thin-film transforms)"));
+            fourier_ = std::make_unique<GpuTexture>(upload(table ? table->texture : none, label_ + " (thin-film transforms)"));
         }
         return fourier_.get();
     }
     return nullptr;
+}
+
+void EnvironmentMaps::make_specular() const {
+    std::call_once(specular_made_, [this] {
+        const std::vector<lighting::FloatCube> levels =
+            source_.empty() ? std::vector<lighting::FloatCube>{lighting::FloatCube(1)} : lighting::prefilter_specular(environment_, kLevels);
+        specular_data_ = texture::TextureData{texture::TextureType::Cube, texture::PixelFormat::RGBA32F, {}, label_};
+        specular_data_.faces.resize(6);
+        for (int face = 0; face < 6; ++face)
+            for (const auto& level : levels) specular_data_.faces[static_cast<size_t>(face)].push_back(cube_face_level(level, face));
+        for (size_t level = 0; level < levels.size(); ++level) {
+            texture::TextureData one{texture::TextureType::Cube, texture::PixelFormat::RGBA32F, {}, label_};
+            for (const auto& face : specular_data_.faces) one.faces.push_back({face[level]});
+            specular_levels_.push_back(std::move(one));
+        }
+    });
+}
+
+const texture::TextureData& EnvironmentMaps::specular_data() const {
+    make_specular();
+    return specular_data_;
+}
+
+const texture::TextureData& EnvironmentMaps::specular_level(int level) const {
+    make_specular();
+    return specular_levels_.at(static_cast<size_t>(level));
 }
 
 const lighting::DfgTable& EnvironmentMaps::lobe_mass() const {
@@ -206,7 +223,7 @@ const lighting::DfgTable& EnvironmentMaps::lobe_mass() const {
 const texture::TextureData& EnvironmentMaps::spectral_irradiance_data() const {
     std::call_once(spectral_irradiance_made_, [this] {
         spectral_irradiance_data_ = texture::TextureData{texture::TextureType::Cube, texture::PixelFormat::RGBA32F, {},
-                                                         specular_data_.source + " (spectral weights, cosine-convolved)"};
+                                                         label_ + " (spectral weights, cosine-convolved)"};
         const lighting::FloatCube cube = environment_.spectral ? lighting::cosine_convolved(environment_.spectral->weights) : lighting::FloatCube(1);
         for (int face = 0; face < 6; ++face) spectral_irradiance_data_.faces.push_back({cube_face_level(cube, face)});
     });

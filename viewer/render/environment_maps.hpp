@@ -1,7 +1,7 @@
 // The scene environment on the GPU: the textures effects sample for image-based lighting, made
 // from lighting/ on the CPU and kept there too for the CPU references (docs/effect-format.md,
 // "Environment lighting"):
-//   environment:specular    cube map, RGBA32F, one mip level per roughness step (level 0 the radiance),
+//   environment:specular    cube map, RGBA32F, one mip level per roughness step (level 0 the radiance; made on first use),
 //                           without the disc lights (they are shaded in closed form)
 //   environment:irradiance  17x1 RGBA32F: the order-2 SH coefficients of the cosine-convolved radiance / pi
 //                           (without the discs), then per disc light (at most kMaxDiscs; the sun, a lamp)
@@ -66,22 +66,27 @@ public:
     const spectral::PackedTexture* spectral_fourier() const;
 
     // The same numbers on the CPU.
-    const lighting::PrefilteredEnvironment& prefiltered() const { return prefiltered_; }
+    const lighting::PrefilteredEnvironment& prefiltered() const { return prefiltered_; }  // the SH and discs; `specular` empty
     const lighting::Environment& unfiltered() const { return environment_; }  // the radiance and its discs, for ground truths
     const lighting::DfgTable& dfg() const { return dfg_; }
     const lighting::DfgTable& lobe_mass() const;  // made on first use, thread-safe
-    const texture::TextureData& specular_data() const { return specular_data_; }  // faces[face][level], GL rows
-    const texture::TextureData& specular_level(int level) const { return specular_levels_.at(static_cast<size_t>(level)); }  // one level's six faces
+    // environment:specular on the CPU, made on first use (thread-safe; seconds: the GGX prefiltering).
+    const texture::TextureData& specular_data() const;          // faces[face][level], GL rows
+    const texture::TextureData& specular_level(int level) const;  // one level's six faces
     // The radiance with the disc lights drawn in, one level: what the background shows.
     const GpuTexture& background() const { return background_; }
 
 private:
-    std::string source_;
+    void make_specular() const;
+
+    std::string source_, label_;  // label_: the source as texture names show it
     lighting::Environment environment_;
     lighting::PrefilteredEnvironment prefiltered_;
     lighting::DfgTable dfg_;
-    texture::TextureData specular_data_;
-    std::vector<texture::TextureData> specular_levels_;
+    mutable std::once_flag specular_made_;
+    mutable texture::TextureData specular_data_;
+    mutable std::vector<texture::TextureData> specular_levels_;
+    mutable std::unique_ptr<GpuTexture> specular_;
     texture::TextureData spectral_weights_data_;
     std::vector<texture::TextureData> spectral_lobe_levels_;
     GpuTexture spectral_lobe_weights_, spectral_discs_;
@@ -91,7 +96,7 @@ private:
     mutable std::once_flag lobe_mass_made_;
     mutable lighting::DfgTable lobe_mass_;
     mutable std::unique_ptr<GpuTexture> lobe_mass_texture_;
-    GpuTexture specular_, irradiance_, dfg_texture_, background_, spectral_weights_, spectra_;
+    GpuTexture irradiance_, dfg_texture_, background_, spectral_weights_, spectra_;
     // The sky's Fourier tables: the CPU copy for references (any thread), the GL texture for the
     // render thread, each made when first asked for.
     mutable std::once_flag fourier_made_;
