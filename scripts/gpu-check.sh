@@ -69,6 +69,7 @@ for environment in sky studio; do
   "$fxview" compare effects/spectral/wavelength.fx --environment "$environment" --ground-truth --size 64x64 --json | tee -a "$out/compare-wavelength-environment.jsonl" || true
 done
 "$fxview" bench effects/spectral/wavelength.fx --techniques Lambert,Phong,Blinn --frames 5 --environment studio | tee "$out/bench-wavelength-studio.md"
+"$fxview" compare effects/spectral/wavelength.fx --light-radius 1 --ground-truth --size 64x64 --json | tee "$out/compare-wavelength-lamp.jsonl" || true
 # Issue #28: a .brdf's own importance sampling (isFunc) through the NVIDIA driver, and PBR's sampled
 # specular lobe against the CPU split sum and the ground truth.
 "$fxview" brdf-check tests/effects/brdf/explorer/is_func_sampler.brdf --phi-i 0 --json | tee "$out/brdf-check-isfunc.json" || true
