@@ -196,7 +196,8 @@ Reference make(const LobeShader& shade, const Technique& t) {
             // A highlight's slack: what turning the normal by a few ulps changes (its flanks), plus what
             // the float rounding of the lobe's base, raised to the power, changes (its peak).
             const Shader exact = [&shade](const ShadingInput& i, const ReferenceContext& context) { return shade(i, context, 0.0); };
-            const std::array<double, 4> at = exact(in, c), up = shade(in, c, 2.4e-7), down = shade(in, c, -2.4e-7);
+            // A sphere lamp's count of points may step either way: both signs there.
+            const std::array<double, 4> at = exact(in, c), up = shade(in, c, 2.4e-7), down = in.light_radius > 0.0 ? shade(in, c, -2.4e-7) : at;
             for (size_t i = 0; i < 3; ++i) change = std::max({change, std::abs(up[i] - at[i]), std::abs(down[i] - at[i])});
             change += normal_sensitivity(exact, in, c);
         }
