@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <numbers>
-#include <thread>
+
+#include "lighting/cube_map_tabulate.hpp"
 
 namespace fxview::lighting {
 
@@ -23,20 +24,13 @@ FloatCube cosine_convolved(const FloatCube& radiance, int size, int source_size)
                 texels.push_back({glm::vec3(texel_direction(face, x, y, source.size)),
                                   value * static_cast<float>(texel_solid_angle(x, y, source.size) / std::numbers::pi)});
             }
-    FloatCube out(size);
-    std::vector<std::jthread> workers;
-    for (int face = 0; face < 6; ++face)
-        workers.emplace_back([&, face] {
-            for (int y = 0; y < size; ++y)
-                for (int x = 0; x < size; ++x) {
-                    const glm::vec3 n(texel_direction(face, x, y, size));
-                    glm::dvec3 sum(0.0);
-                    for (const Texel& t : texels) sum += glm::dvec3(t.power) * static_cast<double>(std::max(glm::dot(n, t.direction), 0.0f));
-                    out.at(face, x, y) = glm::vec3(sum);
-                }
-        });
-    workers.clear();
-    return out;
+    // At each output texel's centre (tabulate without supersampling), faces in parallel.
+    return tabulate(size, 1, [&](const glm::dvec3& direction) {
+        const glm::vec3 n(direction);
+        glm::dvec3 sum(0.0);
+        for (const Texel& t : texels) sum += glm::dvec3(t.power) * static_cast<double>(std::max(glm::dot(n, t.direction), 0.0f));
+        return glm::vec3(sum);
+    });
 }
 
 }  // namespace fxview::lighting
