@@ -255,8 +255,9 @@ TEST_CASE("an environment that an effect's shaders do not read is said, never si
         CHECK(r.exit_code == 0);
         CHECK(r.err.find("is lit by the point light only; the environment 'sky'") != std::string::npos);
     }
-    // The thin films and the CD's orders take the spectral form of the sky, studio and furnace; an
-    // environment without one (an RGB image) is said.
+    // The thin films, the CD's orders and wavelength.fx take the spectral form of the sky, studio and
+    // furnace, and of an image (its colours uplifted); an image of more varied colours than its three
+    // spectra hold is said.
     for (const std::string environment : {"sky", "studio", "furnace"})
         for (const std::string spectral : {"/spectral/thinfilm.fx", "/spectral/cd.fx -t Orders", "/spectral/wavelength.fx"}) {
             CAPTURE(environment);
@@ -270,7 +271,17 @@ TEST_CASE("an environment that an effect's shaders do not read is said, never si
     image::write_exr(rgb_file, grey);
     const Result rgb = run("render " + effects + "/spectral/thinfilm.fx --environment " + rgb_file + " --size 16x16 --out " + temp_path("rgb-film.png"));
     CHECK(rgb.exit_code == 0);
-    CHECK(rgb.err.find("has no spectral form") != std::string::npos);
+    CHECK(rgb.err.find("warning") == std::string::npos);
+    image::FloatImage hues(24, 12, 4);  // six saturated hues side by side
+    const float colours[6][3] = {{1, 0.05f, 0.05f}, {1, 1, 0.05f}, {0.05f, 1, 0.05f}, {0.05f, 1, 1}, {0.05f, 0.05f, 1}, {1, 0.05f, 1}};
+    for (int y = 0; y < 12; ++y)
+        for (int x = 0; x < 24; ++x)
+            for (int c = 0; c < 4; ++c) hues.data[static_cast<size_t>((y * 24 + x) * 4 + c)] = c < 3 ? colours[x / 4][c] : 1.0f;
+    const std::string hues_file = temp_path("hues-env.exr");
+    image::write_exr(hues_file, hues);
+    const Result varied = run("render " + effects + "/spectral/thinfilm.fx --environment " + hues_file + " --size 16x16 --out " + temp_path("hue-film.png"));
+    CHECK(varied.exit_code == 0);
+    CHECK(varied.err.find("more varied colours than its three spectra hold") != std::string::npos);
     // An effect that is lit by it says nothing of the kind; without --environment neither does a spectral one.
     CHECK(run("render " + effects + "/brdf/analytic.fx" + out).err.find("point light only") == std::string::npos);
     CHECK(run("render " + effects + "/spectral/cd.fx --size 16x16 --out " + temp_path("no-environment.png")).err.find("point light only") == std::string::npos);

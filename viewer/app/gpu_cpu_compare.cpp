@@ -124,8 +124,8 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
     if (!technique.empty()) effect_options.technique = technique;
     const auto opened = open_effect_session(effect_options);
     render::EffectSession& session = *opened;
-    for (const std::string& warning : session.scene_warnings(request.scene))
-        std::cerr << warning << "\n";
+    const std::vector<std::string> warned = session.scene_warnings(request.scene);
+    for (const std::string& warning : warned) std::cerr << warning << "\n";
 
     CompareResult result;
     result.technique = session.technique();
@@ -140,6 +140,8 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
     // No MSAA: every pixel's colour and captured inputs must come from one fragment.
     gl::RenderTarget target({request.width, request.height, 6, 0});
     session.render(request.scene, target);
+    for (const std::string& warning : session.scene_warnings(request.scene))  // those that need the loaded environment
+        if (std::find(warned.begin(), warned.end(), warning) == warned.end()) std::cerr << warning << "\n";
     const image::FloatImage gpu = target.read_color(0), positions = target.read_color(1), normals = target.read_color(2),
                             uvs = target.read_color(3), tangents = target.read_color(4),
                             footprints = target.read_color(5);

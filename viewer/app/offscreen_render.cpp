@@ -40,9 +40,9 @@ image::FloatImage render_offscreen(const RenderRequest& request) {
         const auto session = open_effect_session(request.effect);
         if (!request.effect.save_preset.empty())
             effect::save_preset(request.effect.save_preset, session->effect(), session->technique(), session->values());
-        for (const std::string& warning : session->scene_warnings(request.scene))
-            std::cerr << warning << "\n";
         session->render(request.scene, target);
+        for (const std::string& warning : session->scene_warnings(request.scene))  // after it: some need the loaded environment
+            std::cerr << warning << "\n";
         if (!request.scene.environment.source.empty()) draw_environment(session->environment(request.scene.environment));
     }
     image::FloatImage image = target.read_color(0);

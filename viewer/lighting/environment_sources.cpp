@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "image/color_encoding.hpp"
 #include "lighting/bright_sources.hpp"
+#include "lighting/image_spectral_form.hpp"
 #include "spectral/colorimetry.hpp"
 #include "spectral/generators.hpp"
 #include "texture/texture_file.hpp"
@@ -303,9 +304,7 @@ glm::vec3 studio_radiance(const glm::dvec3& d) {
     return glm::vec3(static_cast<float>(base));
 }
 
-bool has_spectral_form(const std::string& source) {
-    return source == "studio" || source == "furnace" || source == "sky" || source.rfind("sky:", 0) == 0;
-}
+bool has_spectral_form(const std::string& source) { return !source.empty() && source != "none"; }
 
 Sky parse_sky(const std::string& source) {
     Sky sky;
@@ -345,6 +344,7 @@ Environment make_environment(const std::string& source, int size, const Resource
                 throw Error(source + ": the environment holds radiance above 1e20, beyond what float sums of its texels can hold");
         }
     extract_bright_sources(environment);  // a sun in cube faces (an equirectangular image's went before resampling)
+    add_image_spectral_form(environment);
     return environment;
 }
 

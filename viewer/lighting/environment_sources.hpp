@@ -41,10 +41,11 @@ struct DiscLight {
 // exact for a mirror (alpha 0) and for lobes much wider than the disc.
 double disc_widened_alpha(double alpha, double angular_radius);
 
-// An environment's spectral form where it has one (the built-in sky, studio and furnace): L(d, λ) = Σ_k w_k(d) S_k(λ)
+// An environment's spectral form (the built-in sky, studio and furnace by their models; an image by
+// uplifting its colours, lighting/image_spectral_form.hpp): L(d, λ) = Σ_k w_k(d) S_k(λ)
 // for k < 3, each S_k of luminance 1 (CIE 1931: Σ S ȳ = Σ ȳ over 360-830 nm at 1 nm), so that the RGB
 // radiance is Σ_k w_k rgb(S_k). The weights are tabulated with the disc lights drawn in: what a mirror
-// sees. The spectral techniques (thin films, the CD's orders) read it; RGB images have none (no uplift yet).
+// sees. The spectral techniques (wavelength.fx, thin films, the CD's orders) read it.
 struct SpectralForm {
     FloatCube weights;                                // RGB: w_0, w_1, w_2
     std::array<std::vector<double>, 3> spectra;       // 360-830 nm at 1 nm; an unused one is zero
@@ -55,6 +56,15 @@ struct SpectralForm {
     // radiance (lobes wider than a mirror's integrate the small bright discs in closed form).
     FloatCube map_weights;
     std::vector<DiscLight> discs;
+    // The radiance at `nm` of what `exact` returned; empty: Σ_k w_k S_k(nm). An image's is its
+    // colour's own uplifted spectrum, which three spectra cannot hold for every texel.
+    std::function<double(const glm::dvec3& exact_weights, int nm)> exact_radiance;
+    // An image has no model beyond its texels: ground truths then read map_weights as the GPU reads
+    // a cube (seamless bilinear, reference/cpu_sampler.hpp), the disc lights sharp.
+    bool texels_only = false;
+    // An image's: how far its three spectra are from its texels' uplifted spectra (relative RMS,
+    // lighting/image_spectral_form.hpp); 0 for the built-in models.
+    double projection_error = 0.0;
     static constexpr int kFirstNm = 360, kLastNm = 830;
 };
 
@@ -77,6 +87,6 @@ struct Sky {
     double sun_cct = 5500.0;
 };
 Sky parse_sky(const std::string& source);  // "sky", "sky:ELEV" or "sky:ELEV,CCT"
-bool has_spectral_form(const std::string& source);  // the built-in sky, studio and furnace have one
+bool has_spectral_form(const std::string& source);  // every source has one now: the built-in ones and images (uplifted)
 
 }  // namespace fxview::lighting

@@ -88,10 +88,19 @@ double EnvironmentLookup::spectral_radiance(const glm::dvec3& weights, int nm) c
 }
 
 glm::dvec3 EnvironmentLookup::exact_spectral_weights(const glm::dvec3& world) const {
-    return maps_->unfiltered().spectral->exact(rotation_ * world) * intensity_;
+    const lighting::SpectralForm& form = *maps_->unfiltered().spectral;
+    if (!form.texels_only) return form.exact(rotation_ * world) * intensity_;
+    effect::SamplerState linear;
+    linear.min_filter = linear.mag_filter = GL_LINEAR;
+    const glm::dvec3 d = glm::normalize(rotation_ * world);
+    glm::dvec3 w(sample_cube(maps_->spectral_lobe_level(0), linear, false, d).value);
+    for (const lighting::DiscLight& disc : form.discs)
+        if (glm::dot(d, disc.direction) > std::cos(disc.angular_radius)) w += disc.radiance;
+    return w * intensity_;
 }
 
 double EnvironmentLookup::exact_spectral_radiance(const glm::dvec3& weights, int nm) const {
+    if (const auto& uplifted = maps_->unfiltered().spectral->exact_radiance) return uplifted(weights, nm);
     const auto& spectra = maps_->unfiltered().spectral->spectra;
     const size_t i = static_cast<size_t>(nm - lighting::SpectralForm::kFirstNm);
     return weights.x * spectra[0][i] + weights.y * spectra[1][i] + weights.z * spectra[2][i];
@@ -166,7 +175,8 @@ glm::dvec3 EnvironmentLookup::spectral_highlight(const glm::dvec3& n, const glm:
     return sum * scale + discs / kPi * intensity_;
 }
 
-glm::dvec3 EnvironmentLookup::exact_spectral_integral(const std::function<double(const glm::dvec3&)>& g, const Draw& draw, int samples, unsigned seed) const {
+void EnvironmentLookup::visit_exact_integral(const std::function<double(const glm::dvec3&)>& g, const Draw& draw, int samples, unsigned seed,
+                                             const std::function<void(double factor, const glm::dvec3& l)>& add) const {
     const glm::dmat3 to_world = glm::transpose(rotation_);
     const auto& discs = maps_->unfiltered().discs;
     const auto in_disc = [&](const glm::dvec3& l) {
@@ -176,21 +186,36 @@ glm::dvec3 EnvironmentLookup::exact_spectral_integral(const std::function<double
     };
     // The Hammersley set turned per pixel (Cranley-Patterson rotation by the seed's two numbers).
     const double shift_u = (seed % 9973u) / 9973.0, shift_v = (seed / 9973u % 9967u) / 9967.0;
-    glm::dvec3 sum(0.0);
     for (int i = 0; i < samples; ++i) {
         const glm::dvec2 h = lighting::hammersley(static_cast<unsigned>(i), static_cast<unsigned>(samples));
         double density = 0.0;
         const glm::dvec3 l = draw({std::fmod(h.x + shift_u, 1.0), std::fmod(h.y + shift_v, 1.0)}, density);
         if (!(density > 0.0) || in_disc(l)) continue;
         const double value = g(l);
-        if (value != 0.0) sum += value / density * exact_spectral_weights(l);
+        if (value != 0.0) add(value / density / static_cast<double>(samples) / std::numbers::pi, l);
     }
-    sum /= static_cast<double>(samples);
     for (const lighting::DiscLight& disc : discs) {
         const std::vector<glm::dvec3> points = disc.quadrature(to_world * disc.direction);
-        for (const glm::dvec3& l : points) sum += g(l) * exact_spectral_weights(l) * disc.solid_angle() / static_cast<double>(points.size());
+        for (const glm::dvec3& l : points) add(g(l) * disc.solid_angle() / static_cast<double>(points.size()) / std::numbers::pi, l);
     }
-    return sum / std::numbers::pi;
+}
+
+glm::dvec3 EnvironmentLookup::exact_spectral_integral(const std::function<double(const glm::dvec3&)>& g, const Draw& draw, int samples, unsigned seed) const {
+    glm::dvec3 sum(0.0);
+    visit_exact_integral(g, draw, samples, seed, [&](double factor, const glm::dvec3& l) { sum += factor * exact_spectral_weights(l); });
+    return sum;
+}
+
+std::vector<double> EnvironmentLookup::exact_spectral_integral_spectrum(const std::function<double(const glm::dvec3&)>& g, const Draw& draw, int samples,
+                                                                         unsigned seed) const {
+    constexpr int first = lighting::SpectralForm::kFirstNm, last = lighting::SpectralForm::kLastNm;
+    std::vector<double> sum(last - first + 1, 0.0);
+    visit_exact_integral(g, draw, samples, seed, [&](double factor, const glm::dvec3& l) {
+        if (factor == 0.0) return;
+        const glm::dvec3 w = exact_spectral_weights(l);
+        for (int nm = first; nm <= last; ++nm) sum[static_cast<size_t>(nm - first)] += factor * exact_spectral_radiance(w, nm);
+    });
+    return sum;
 }
 
 glm::dvec3 EnvironmentLookup::unfiltered(const glm::dvec3& world) const {

@@ -46,6 +46,11 @@ public:
     // `seed`), none inside a disc light, each disc by its 512-point quadrature.
     using Draw = std::function<glm::dvec3(const glm::dvec2& u, double& density)>;
     glm::dvec3 exact_spectral_integral(const std::function<double(const glm::dvec3&)>& g, const Draw& draw, int samples, unsigned seed) const;
+    // The same as a spectrum (360-830 nm at 1 nm) where the directions' spectra are not a sum of the
+    // three (an image, `uplifted()`): each direction's own uplifted spectrum integrated.
+    std::vector<double> exact_spectral_integral_spectrum(const std::function<double(const glm::dvec3&)>& g, const Draw& draw, int samples,
+                                                         unsigned seed) const;
+    bool uplifted() const { return spectral() && maps_->unfiltered().spectral->texels_only; }
     // The thin-film transforms of its three spectra (environment:fourier); null without a spectral form.
     const spectral::PackedTexture* spectral_fourier() const { return maps_->spectral_fourier(); }
     // The ground truth of ∫ L(l) f(l) (n·l) dl over the unfiltered environment: Monte Carlo with
@@ -64,6 +69,10 @@ public:
 
 private:
     const render::EnvironmentMaps* maps_ = nullptr;
+    // exact_spectral_integral's directions: `add(factor, l)` for each, factor = g / density / samples / π
+    // (each disc's points by their share of its solid angle).
+    void visit_exact_integral(const std::function<double(const glm::dvec3&)>& g, const Draw& draw, int samples, unsigned seed,
+                              const std::function<void(double factor, const glm::dvec3& l)>& add) const;
     glm::dvec3 unfiltered(const glm::dvec3& world) const;  // bilinear in the radiance without discs
     // Each disc light through f by its 512-point quadrature (the ground truth).
     glm::dvec3 discs(const brdf::Directions& d, const std::function<glm::dvec3(const glm::dvec3&)>& f) const;

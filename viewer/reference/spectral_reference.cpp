@@ -35,9 +35,13 @@ struct Surroundings {
     glm::dvec3 diffuse{0.0}, highlight{0.0};
     double seam = 0.0;  // how far GL's filtering leaves the weights open (cube corners, sub-texel precision)
     bool exact = false;  // the ground truth's: the model's spectra in double
+    // The ground truth under an image: the integrals as spectra (360-830 nm), each direction's own uplift.
+    std::vector<double> diffuse_spectrum, highlight_spectrum;
     double at(const glm::dvec3& weights, int nm) const {
         return exact ? environment.exact_spectral_radiance(weights, nm) : environment.spectral_radiance(weights, nm);
     }
+    double diffuse_at(int nm) const { return diffuse_spectrum.empty() ? at(diffuse, nm) : diffuse_spectrum[static_cast<size_t>(nm - 360)]; }
+    double highlight_at(int nm) const { return highlight_spectrum.empty() ? at(highlight, nm) : highlight_spectrum[static_cast<size_t>(nm - 360)]; }
 };
 
 // A unit direction about `axis` at polar cosine `cosine` and azimuth 2π u (Duff et al.'s frame, as the GPU).
@@ -65,36 +69,46 @@ std::optional<Surroundings> surroundings(const ShadingInput& in, const Reference
     }
     constexpr int kSamples = 2048;
     s.exact = true;
-    s.diffuse = c.number("Kd") * environment->exact_spectral_integral(
-                                     [&](const glm::dvec3& l) { return std::max(glm::dot(n, l), 0.0); },
-                                     [&](const glm::dvec2& u, double& density) {
-                                         const double cosine = std::sqrt(1.0 - u.x);
-                                         density = cosine / kPi;
-                                         return about(n, cosine, u.y);
-                                     },
-                                     kSamples, *truth_seed);
+    // Into weights (three spectra) or, under an image, into a spectrum: the integral of each direction's own one.
+    const auto gather = [&](double scale, const std::function<double(const glm::dvec3&)>& g, const EnvironmentLookup::Draw& draw, unsigned seed,
+                            glm::dvec3& weights, std::vector<double>& spectrum) {
+        if (!environment->uplifted()) {
+            weights = scale * environment->exact_spectral_integral(g, draw, kSamples, seed);
+            return;
+        }
+        spectrum = environment->exact_spectral_integral_spectrum(g, draw, kSamples, seed);
+        for (double& v : spectrum) v *= scale;
+    };
+    gather(
+        c.number("Kd"), [&](const glm::dvec3& l) { return std::max(glm::dot(n, l), 0.0); },
+        [&](const glm::dvec2& u, double& density) {
+            const double cosine = std::sqrt(1.0 - u.x);
+            density = cosine / kPi;
+            return about(n, cosine, u.y);
+        },
+        *truth_seed, s.diffuse, s.diffuse_spectrum);
     if (lobe == 1)
-        s.highlight = c.number("Ks") * environment->exact_spectral_integral(
-                                           [&](const glm::dvec3& l) { return glm::dot(n, l) > 0.0 ? std::pow(std::max(glm::dot(r, l), 0.0), power) : 0.0; },
-                                           [&](const glm::dvec2& u, double& density) {
-                                               const double cosine = std::pow(1.0 - u.x, 1.0 / (power + 1.0));
-                                               density = (power + 1.0) / (2.0 * kPi) * std::pow(cosine, power);
-                                               return about(r, cosine, u.y);
-                                           },
-                                           kSamples, *truth_seed + 1u);
+        gather(
+            c.number("Ks"),
+            [&](const glm::dvec3& l) { return glm::dot(n, l) > 0.0 ? std::pow(std::max(glm::dot(r, l), 0.0), power) : 0.0; },
+            [&](const glm::dvec2& u, double& density) {
+                const double cosine = std::pow(1.0 - u.x, 1.0 / (power + 1.0));
+                density = (power + 1.0) / (2.0 * kPi) * std::pow(cosine, power);
+                return about(r, cosine, u.y);
+            },
+            *truth_seed + 1u, s.highlight, s.highlight_spectrum);
     if (lobe == 2)
-        s.highlight = c.number("Ks") * environment->exact_spectral_integral(
-                                           [&](const glm::dvec3& l) {
-                                               return glm::dot(n, l) > 0.0 ? std::pow(std::max(glm::dot(n, glm::normalize(l + v)), 0.0), power) : 0.0;
-                                           },
-                                           [&](const glm::dvec2& u, double& density) {
-                                               const double cosine = std::pow(1.0 - u.x, 1.0 / (power + 1.0));
-                                               const glm::dvec3 h = about(n, cosine, u.y);
-                                               const double vh = glm::dot(v, h);
-                                               density = vh > 0.0 ? (power + 1.0) / (2.0 * kPi) * std::pow(cosine, power) / (4.0 * vh) : 0.0;
-                                               return 2.0 * vh * h - v;
-                                           },
-                                           kSamples, *truth_seed + 2u);
+        gather(
+            c.number("Ks"),
+            [&](const glm::dvec3& l) { return glm::dot(n, l) > 0.0 ? std::pow(std::max(glm::dot(n, glm::normalize(l + v)), 0.0), power) : 0.0; },
+            [&](const glm::dvec2& u, double& density) {
+                const double cosine = std::pow(1.0 - u.x, 1.0 / (power + 1.0));
+                const glm::dvec3 h = about(n, cosine, u.y);
+                const double vh = glm::dot(v, h);
+                density = vh > 0.0 ? (power + 1.0) / (2.0 * kPi) * std::pow(cosine, power) / (4.0 * vh) : 0.0;
+                return 2.0 * vh * h - v;
+            },
+            *truth_seed + 2u, s.highlight, s.highlight_spectrum);
     return s;
 }
 
@@ -162,7 +176,7 @@ spectral::Vec3 lit(const SpectralSetup& s, bool every_nm, const Lamp& lamp, cons
     unlit.brightness = 1.0;
     return integrate(unlit, every_nm, [&](int nm) {
         const double light = spectrum(s, lamp.light, nm) * s.brightness, object = spectrum(s, lamp.object, nm);
-        const double diffuse = env ? env->at(env->diffuse, nm) : 0.0, highlight = env ? env->at(env->highlight, nm) : 0.0;
+        const double diffuse = env ? env->diffuse_at(nm) : 0.0, highlight = env ? env->highlight_at(nm) : 0.0;
         const double body = object * (light * lamp.diffuse + diffuse), shine = (metal ? object : 1.0) * (light * lamp.specular + highlight);
         return part == Part::Body ? body : part == Part::Highlight ? shine : body + shine;
     });

@@ -1,5 +1,6 @@
 #include "render/effect_session.hpp"
 
+#include <cmath>
 #include <optional>
 
 #include "core/error.hpp"
@@ -145,6 +146,12 @@ const EnvironmentMaps& EffectSession::environment(const scene::Environment& envi
     return *environment_;
 }
 
+namespace {
+// Above this the films under the ColorChecker room (projection error 0.2) reach CIEDE2000 12 at
+// saturated patches; skies and rooms of ordinary colours stay below 0.03 (docs/spectral.md).
+constexpr double kUpliftWarningError = 0.05;
+}  // namespace
+
 std::string EffectSession::unused_environment_warning(const scene::Environment& environment) const {
     if (environment.source.empty()) return "";
     // Said per technique: in one effect some techniques may read the environment and others not.
@@ -156,6 +163,15 @@ std::string EffectSession::unused_environment_warning(const scene::Environment& 
         return path_ + ": warning: the environment '" + environment.source +
                "' has no spectral form (the built-in sky, studio and furnace have one; images not yet); technique '" + technique_ +
                "' stays lit by its light spectrum, the environment fills the background";
+    // Known once the environment is loaded (after the first frame).
+    if (!t.reads_rgb_environment && environment_ && environment_->source() == environment.source && environment_->has_spectral_form()) {
+        const double error = environment_->unfiltered().spectral->projection_error;
+        if (error > kUpliftWarningError)
+            return path_ + ": warning: the environment '" + environment.source + "' has more varied colours than its three spectra hold (" +
+                   std::to_string(static_cast<int>(std::lround(100.0 * error))) +
+                   " % RMS from each colour's own uplifted spectrum): where a film or grating filters its saturated colours, technique '" +
+                   technique_ + "' may be several CIEDE2000 units off (docs/spectral.md, \"Under an image\")";
+    }
     return "";
 }
 
