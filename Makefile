@@ -35,6 +35,7 @@ run: build
 	$(FXVIEW) render effects/spectral/wavelength.fx --technique Phong --set ObjectSpectrum=TCS09 --set Brightness=0.5 --environment sky:35 --mesh knot --size 512x512 --out out/knot-spectral-sky.png
 	$(FXVIEW) render effects/spectral/thinfilm.fx --technique Bubble --set Thickness=250 --set Variation=600 --mesh sphere --size 512x512 --out out/sphere-bubble.png
 	$(FXVIEW) render effects/spectral/thinfilm.fx --technique BubbleFourier --set Thickness=300 --set Variation=700 --environment sky:35 --mesh sphere --size 512x512 --out out/sphere-bubble-sky.png
+	$(FXVIEW) render effects/spectral/thinfilm.fx --technique BubbleFourier --set Thickness=300 --set Variation=700 --environment textures/colour_room.hdr --mesh sphere --size 512x512 --out out/sphere-bubble-room.png
 	$(FXVIEW) render effects/spectral/thinfilm.fx --technique MultiLayerFaster --mesh knot --size 512x512 --out out/knot-multilayer.png
 	$(FXVIEW) render effects/brdf/analytic.fx --preset effects/brdf/presets/gold.json --technique PBR --mesh knot --size 512x512 --samples 4 --out out/knot-pbr-gold.png
 	$(FXVIEW) render effects/brdf/analytic.fx --technique AshikhminShirley --mesh torus --camera-rotate 30,0,0 --size 512x512 --samples 4 --environment studio --tone-map pbr-neutral --out out/torus-ashikhmin-shirley.png

@@ -70,6 +70,12 @@ for environment in sky studio; do
 done
 "$fxview" bench effects/spectral/wavelength.fx --techniques Lambert,Phong,Blinn --frames 5 --environment studio | tee "$out/bench-wavelength-studio.md"
 "$fxview" compare effects/spectral/wavelength.fx --light-radius 1 --ground-truth --size 64x64 --json | tee "$out/compare-wavelength-lamp.jsonl" || true
+# Issue #25 item 2: an RGB image uplifted to spectra (Jakob & Hanika) lighting films, lobes and orders,
+# against the CPU reference and each direction's own uplifted spectrum.
+for t in "thinfilm.fx BubbleFourier" "wavelength.fx Phong" "cd.fx Orders"; do
+  set -- $t
+  "$fxview" compare "effects/spectral/$1" -t "$2" --mesh "$([ "$1" = cd.fx ] && echo disc || echo sphere)" --environment textures/colour_room.hdr --ground-truth --size 64x64 --json | tee -a "$out/compare-uplifted-image.jsonl" || true
+done
 # Issue #28: a .brdf's own importance sampling (isFunc) through the NVIDIA driver, and PBR's sampled
 # specular lobe against the CPU split sum and the ground truth.
 "$fxview" brdf-check tests/effects/brdf/explorer/is_func_sampler.brdf --phi-i 0 --json | tee "$out/brdf-check-isfunc.json" || true
