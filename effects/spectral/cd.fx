@@ -19,7 +19,8 @@
 #include "environment_spectral.glsl"
 
 uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
-                            string UIHelp = "Index in spectra/library.txt (5 = D65)"; > = 5;
+                            string UIHelp = "The light's spectrum (spectra/library.txt; 5 = D65); a scene light spectrum (--light-spectrum, Scene tab) overrides it";
+                            string SceneLight = "spectrum"; > = 5;
 uniform int SubstrateSpectrum < string UIName = "Substrate spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
                                 string UIHelp = "Reflectance of the disc's metal coating"; > = 0;
 uniform float SubstrateWeight < string UIName = "Substrate kd"; float UIMin = 0; float UIMax = 1; string UIGroup = "Spectra"; > = 0.15;

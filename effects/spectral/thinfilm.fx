@@ -11,7 +11,8 @@
 #include "environment_spectral.glsl"
 
 uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
-                            string UIHelp = "Index in spectra/library.txt (5 = D65)"; > = 5;
+                            string UIHelp = "The light's spectrum (spectra/library.txt; 5 = D65); a scene light spectrum (--light-spectrum, Scene tab) overrides it";
+                            string SceneLight = "spectrum"; > = 5;
 uniform float Brightness < string UIName = "Brightness"; float UIMin = 0; float UIMax = 8; float UIStep = 0.1; string UIGroup = "Lighting";
                            string UIHelp = "Scales the reflected light: 1 is physical (a perfect mirror under illuminant E gives Y = 1)"; > = 2.0;
 uniform int Incidence < string UIName = "Angle of incidence from"; string UIWidget = "combo"; string UIItems = "view|light"; string UIGroup = "Lighting";

@@ -12,7 +12,8 @@
 
 // Indices into spectra/library.txt (`fxview spectra list`).
 uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
-                            string UIHelp = "Index in spectra/library.txt (5 = D65)"; > = 5;
+                            string UIHelp = "The light's spectrum (spectra/library.txt; 5 = D65); a scene light spectrum (--light-spectrum, Scene tab) overrides it";
+                            string SceneLight = "spectrum"; > = 5;
 uniform int ObjectSpectrum < string UIName = "Object spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
                              string UIHelp = "Index in spectra/library.txt (10-23 = CIE test colour samples)"; > = 14;
 uniform float Brightness < string UIName = "Brightness"; float UIMin = 0; float UIMax = 8; float UIStep = 0.1; string UIGroup = "Lighting";

@@ -146,7 +146,7 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
                             uvs = target.read_color(3), tangents = target.read_color(4),
                             footprints = target.read_color(5);
 
-    effect::ParameterValues cpu_values = session.values();
+    effect::ParameterValues cpu_values = session.values_for(request.scene);
     for (const auto& assignment : reference_sets) effect::set_value_from_text(session.effect(), cpu_values, assignment);
     const reference::ReferenceContext reference_context{cpu_values, session.resources(), &request.scene.environment};
     const double tolerance = ref->tolerance_for ? ref->tolerance_for(reference_context) : ref->tolerance;

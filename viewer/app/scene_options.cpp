@@ -33,6 +33,9 @@ void add_scene_options(CLI::App& command, SceneOptions& o) {
     command.add_option("--light-angle", o.light_angle, "Light as a sphere of this angular radius seen from the origin, degrees")
         ->check(finite_range(0.0, 60.0))
         ->excludes(radius);
+    command.add_option("--light-spectrum", o.light_spectrum,
+                       "The light's spectrum, a name of the spectral library (`fxview spectra list`): every spectral effect's light "
+                       "spectrum follows it (parameters annotated SceneLight = \"spectrum\")");
     command.add_option("--object-position", o.object_position, "Object position X,Y,Z");
     command.add_option("--object-rotate", o.object_rotate, "Object rotation X,Y,Z in degrees");
     command.add_option("--object-scale", o.object_scale, "Object scale X,Y,Z");
@@ -81,6 +84,7 @@ RenderRequest to_render_request(const SceneOptions& o) {
     scene.light.pose.rotation = math::rotation_from_euler_degrees(parse_vec3("--light-rotate", o.light_rotate));
     if (o.light_angle) scene.light.radius = glm::length(scene.light.pose.position) * std::sin(glm::radians(*o.light_angle));
     else scene.light.radius = o.light_radius.value_or(preset.light_radius.value_or(0.0f));
+    scene.light.spectrum = o.light_spectrum.value_or(preset.light_spectrum.value_or(""));
     if (o.light_angle && *o.light_angle > 0 && glm::length(scene.light.pose.position) == 0.0f)
         throw UsageError("--light-angle: the light sits at the origin; give --light-radius instead");
     scene::SceneObject& object = scene.objects.front();

@@ -132,6 +132,9 @@ PresetScene load_preset_scene(const std::string& path, const ResourceLimits& lim
             scene.exposure = static_cast<float>(number(-30, 30, "a number of EV stops, -30 to 30"));
         } else if (key == "light_radius") {
             scene.light_radius = static_cast<float>(number(0, 1e3, "a radius in world units, 0 to 1000"));
+        } else if (key == "light_spectrum") {
+            if (!value.is_string() || value.get<std::string>().empty()) throw bad("a spectral-library name");
+            scene.light_spectrum = value.get<std::string>();
         } else if (key == "tone_map") {
             if (!value.is_string()) throw bad("a string");
             scene.tone_map = value.get<std::string>();
@@ -141,7 +144,7 @@ PresetScene load_preset_scene(const std::string& path, const ResourceLimits& lim
             scene.samples = static_cast<int>(samples);
         } else {
             throw Error(where + "unknown scene setting \"" + excerpt(key) +
-                        "\" (environment, environment_rotate, environment_intensity, exposure, tone_map, samples, light_radius)");
+                        "\" (environment, environment_rotate, environment_intensity, exposure, tone_map, samples, light_radius, light_spectrum)");
         }
     }
     return scene;

@@ -304,8 +304,6 @@ glm::vec3 studio_radiance(const glm::dvec3& d) {
     return glm::vec3(static_cast<float>(base));
 }
 
-bool has_spectral_form(const std::string& source) { return !source.empty() && source != "none"; }
-
 Sky parse_sky(const std::string& source) {
     Sky sky;
     if (source == "sky") return sky;

@@ -87,6 +87,5 @@ struct Sky {
     double sun_cct = 5500.0;
 };
 Sky parse_sky(const std::string& source);  // "sky", "sky:ELEV" or "sky:ELEV,CCT"
-bool has_spectral_form(const std::string& source);  // every source has one now: the built-in ones and images (uplifted)
 
 }  // namespace fxview::lighting

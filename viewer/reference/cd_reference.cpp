@@ -275,7 +275,7 @@ Reference make(Diffraction diffraction, Surroundings surroundings = Surroundings
                        orders_surroundings_exact(d, c, *environment, nm);
             }), s.mapping);
         };
-        r.truth_method = "the orders at every nm mirroring the environment's model (no bands, the sun a sharp disc)";
+        r.truth_method = "the orders at every nm mirroring the environment's model (an image: each direction's own uplifted spectrum; no bands, the sun a sharp disc)";
     }
     r.tolerance_for = [surroundings](const ReferenceContext& c) {
         const bool stand_in_off = surroundings == Surroundings::Diffracted && surroundings_of(c);

@@ -222,7 +222,7 @@ Reference make(const LobeShader& shade, const Technique& t) {
         r.truth = [t](const ShadingInput& in, const ReferenceContext& c, unsigned seed) {
             return colour(every_nm_setup(c), true, lamp(in, c, t.lobe, 0.0, false, true), surroundings(in, c, t.lobe, &seed), t, c);
         };
-    r.truth_method = "the lamp and the environment at every nm: a sphere lamp over its disc (128 x 256 points), an environment's model over the sphere (2048 directions per lobe, the sun by quadrature)";
+    r.truth_method = "the lamp and the environment at every nm: a sphere lamp over its disc (128 x 256 points), an environment's model over the sphere (an image: each direction's own uplifted spectrum; 2048 directions per lobe, the sun by quadrature)";
     r.truth_with_sized_light = true;
     r.tolerance = 5e-5;
     r.why = "float32 on the GPU against double here: a sum of up to 471 products (rounding about 1e-6 of the "

@@ -305,7 +305,7 @@ Reference with_sky_truth(Reference r, StackAt stack_at_nm) {
             return f.environment->exact_spectral_radiance(weights, nm) * optics::transfer_matrix_reflectance(stack_at_nm(f, nm), nm, f.cos0);
         }), every_nm.mapping);
     };
-    r.truth_method = "the exact film mirroring the environment's model (1 nm, characteristic matrices)";
+    r.truth_method = "the exact film mirroring the environment's model (an image: each direction's own uplifted spectrum; 1 nm, characteristic matrices)";
     return r;
 }
 

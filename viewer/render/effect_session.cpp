@@ -1,5 +1,6 @@
 #include "render/effect_session.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -147,8 +148,8 @@ const EnvironmentMaps& EffectSession::environment(const scene::Environment& envi
 }
 
 namespace {
-// Above this the films under the ColorChecker room (projection error 0.2) reach CIEDE2000 12 at
-// saturated patches; skies and rooms of ordinary colours stay below 0.03 (docs/spectral.md).
+// Above this warned: the films under the ColorChecker room (projection error 0.14) reach CIEDE2000 11
+// at saturated patches; textures/sky_cross.png (0.014) stays within 0.04 (docs/spectral.md).
 constexpr double kUpliftWarningError = 0.05;
 }  // namespace
 
@@ -159,18 +160,15 @@ std::string EffectSession::unused_environment_warning(const scene::Environment& 
     if (!t.reads_environment)
         return path_ + ": warning: technique '" + technique_ + "' is lit by the point light only; the environment '" + environment.source +
                "' fills the background but does not light it";
-    if (!t.reads_rgb_environment && !lighting::has_spectral_form(environment.source))
-        return path_ + ": warning: the environment '" + environment.source +
-               "' has no spectral form (the built-in sky, studio and furnace have one; images not yet); technique '" + technique_ +
-               "' stays lit by its light spectrum, the environment fills the background";
     // Known once the environment is loaded (after the first frame).
     if (!t.reads_rgb_environment && environment_ && environment_->source() == environment.source && environment_->has_spectral_form()) {
         const double error = environment_->unfiltered().spectral->projection_error;
         if (error > kUpliftWarningError)
             return path_ + ": warning: the environment '" + environment.source + "' has more varied colours than its three spectra hold (" +
                    std::to_string(static_cast<int>(std::lround(100.0 * error))) +
-                   " % RMS from each colour's own uplifted spectrum): where a film or grating filters its saturated colours, technique '" +
-                   technique_ + "' may be several CIEDE2000 units off (docs/spectral.md, \"Under an image\")";
+                   " % RMS from each colour's own uplifted spectrum): where a film or grating filters its saturated colours, colours may be "
+                   "several CIEDE2000 units off (body colours and wide lobes far less; technique '" +
+                   technique_ + "', docs/spectral.md, \"Under an image\")";
     }
     return "";
 }
@@ -183,14 +181,44 @@ std::string EffectSession::unused_light_radius_warning(const scene::Light& light
 
 std::vector<std::string> EffectSession::scene_warnings(const scene::Scene& scene) const {
     std::vector<std::string> warnings;
-    for (std::string warning : {unused_environment_warning(scene.environment), unused_light_radius_warning(scene.light)})
+    for (std::string warning :
+         {unused_environment_warning(scene.environment), unused_light_radius_warning(scene.light), unused_light_spectrum_warning(scene.light)})
         if (!warning.empty()) warnings.push_back(std::move(warning));
     return warnings;
 }
 
+bool EffectSession::follows_scene_light(const effect::Parameter& parameter) {
+    for (const effect::Annotation& a : parameter.annotations)
+        if (a.name == "SceneLight" && a.value.is_string && a.value.text == "spectrum") return true;
+    return false;
+}
+
+effect::ParameterValues EffectSession::values_for(const scene::Scene& scene) const {
+    if (scene.light.spectrum.empty()) return values_;
+    effect::ParameterValues values = values_;
+    for (const effect::Parameter& p : loaded_->effect->parameters) {
+        if (!follows_scene_light(p)) continue;
+        if (std::find(p.ui.items.begin(), p.ui.items.end(), scene.light.spectrum) == p.ui.items.end()) {
+            std::string names;
+            for (const std::string& item : p.ui.items) names += (names.empty() ? "" : ", ") + item;
+            throw UsageError("light spectrum '" + scene.light.spectrum + "' is not in the spectral library (" + names + ")");
+        }
+        effect::set_value_from_text(*loaded_->effect, values, p.name + "=" + scene.light.spectrum);
+    }
+    return values;
+}
+
+std::string EffectSession::unused_light_spectrum_warning(const scene::Light& light) const {
+    if (light.spectrum.empty()) return "";
+    for (const effect::Parameter& p : loaded_->effect->parameters)
+        if (follows_scene_light(p)) return "";
+    return path_ + ": warning: no parameter of this effect takes the light's spectrum (SceneLight = \"spectrum\"); the light spectrum '" +
+           light.spectrum + "' changes nothing here";
+}
+
 void EffectSession::render(const scene::Scene& scene, const gl::RenderTarget& target, FrameTiming timing, bool clear_target) {
     if (loaded_->resources->uses_environment()) loaded_->resources->set_environment(&environment(scene.environment));
-    renderer_.render(scene, loaded_->techniques.at(technique_), values_, *loaded_->resources, target, timing, clear_target);
+    renderer_.render(scene, loaded_->techniques.at(technique_), values_for(scene), *loaded_->resources, target, timing, clear_target);
 }
 
 void EffectSession::watch() {

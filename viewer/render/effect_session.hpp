@@ -49,11 +49,20 @@ public:
     const EnvironmentMaps& environment(const scene::Environment& environment);
     // Empty when the selected technique's shaders read the environment (or none is set); otherwise a
     // warning that it only fills the background: said, never silently ignored. Techniques that read only
-    // its spectral form (thin films, the CD's orders) are warned where the environment has none (images).
+    // its spectral form (thin films, the CD's orders, wavelength.fx) are warned where an image's colours
+    // are more varied than its three spectra hold (known once the environment is loaded).
     std::string unused_environment_warning(const scene::Environment& environment) const;
     // The same for a sphere light's radius that the selected technique does not read (LIGHTRADIUS).
     std::string unused_light_radius_warning(const scene::Light& light) const;
-    std::vector<std::string> scene_warnings(const scene::Scene& scene) const;  // both of the above that apply
+    // A scene light spectrum (scene::Light::spectrum) that no parameter of the effect follows.
+    std::string unused_light_spectrum_warning(const scene::Light& light) const;
+    std::vector<std::string> scene_warnings(const scene::Scene& scene) const;  // those of the above that apply
+    // The values a frame of `scene` uses: the user's, with every parameter annotated SceneLight =
+    // "spectrum" set to the scene light's spectrum where it has one (the user's own value is kept for
+    // when it has none). UsageError naming the library's spectra for an unknown name.
+    effect::ParameterValues values_for(const scene::Scene& scene) const;
+    // Whether a parameter follows the scene light's spectrum (SceneLight = "spectrum").
+    static bool follows_scene_light(const effect::Parameter& parameter);
     // What a technique's compiled passes say about it, found once when it is compiled (the viewer
     // asks every frame). Unknown techniques: nothing read, not animated, no textures of their own.
     struct TechniqueTraits {

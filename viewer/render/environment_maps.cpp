@@ -61,8 +61,9 @@ bool EnvironmentMaps::is_resource_name(const std::string& name) {
 }
 
 bool EnvironmentMaps::is_spectral_resource_name(const std::string& name) {
+    // lobe-mass: only the spectral lobes read it (environment_spectral_lobes.glsl).
     return name == "environment:spectral-weights" || name == "environment:spectral-irradiance" || name == "environment:spectral-lobe-weights" ||
-           name == "environment:spectral-discs" || name == "environment:spectra" || name == "environment:fourier";
+           name == "environment:spectral-discs" || name == "environment:spectra" || name == "environment:fourier" || name == "environment:lobe-mass";
 }
 
 EnvironmentMaps::EnvironmentMaps(const std::string& source, const ResourceLimits& limits) : source_(source) {

@@ -53,7 +53,7 @@ public:
     // The texture an "environment:..." ResourceName names; nullptr for an unknown name.
     const GpuTexture* texture(const std::string& resource_name) const;
     static bool is_resource_name(const std::string& name);
-    static bool is_spectral_resource_name(const std::string& name);  // the spectral form's three
+    static bool is_spectral_resource_name(const std::string& name);  // the spectral form's and the lobe-mass table (read only with it)
     bool has_spectral_form() const { return environment_.spectral.has_value(); }
     const texture::TextureData& spectral_weights_data() const { return spectral_weights_data_; }  // faces[face][0]
     // environment:spectral-lobe-weights: its number of levels and one level's six faces.

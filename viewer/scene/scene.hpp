@@ -24,6 +24,9 @@ struct Light {
     glm::vec3 color{1.0f};
     float intensity = 1.0f;
     float radius = 0.0f;  // world units; 0: a point light
+    // A spectral-library name: the light's spectrum in every spectral effect (each parameter annotated
+    // SceneLight = "spectrum" follows it); empty: each effect's own choice.
+    std::string spectrum;
 
     glm::vec3 world_position() const { return glm::mat3_cast(pose.rotation) * pose.position; }
 };

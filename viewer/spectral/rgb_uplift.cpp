@@ -172,7 +172,7 @@ UpliftTable make_uplift_table(const UpliftFit& fit, int resolution) {
 
 SigmoidPolynomial UpliftTable::lookup(const Vec3& input) const {
     Vec3 rgb{};
-    for (size_t k = 0; k < 3; ++k) rgb[k] = std::clamp(input[k], 0.0, 1.0);
+    for (size_t k = 0; k < 3; ++k) rgb[k] = std::isnan(input[k]) ? 0.0 : std::clamp(input[k], 0.0, 1.0);
     if (rgb[0] == rgb[1] && rgb[1] == rgb[2]) {
         // A grey is the constant reflectance S(c2) = rgb (Jakob & Hanika, as pbrt-v4).
         const double v = rgb[0];

@@ -56,8 +56,8 @@ struct UpliftTable {
     SigmoidPolynomial lookup(const Vec3& rgb) const;
 };
 
-// Fits every node (each row of nodes warm-started from its neighbour, from a fifth of the scale
-// outwards, as rgb2spec_opt), in parallel.
+// Fits every node, in parallel: along the brightness axis each node starts from the last one's
+// coefficients, from a fifth of the scale outwards (as rgb2spec_opt).
 UpliftTable make_uplift_table(const UpliftFit& fit, int resolution);
 
 // The table generated at build time for this colorimetry (fxview_uplift_table).

@@ -37,7 +37,8 @@ void EnvironmentPanel::draw(scene::Environment& environment, render::EffectSessi
         else if (kind == 3) set("furnace");
     }
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Lights effects that use image-based lighting (analytic.fx's PBR and Lambert, .brdf files) and fills the background");
+        ImGui::SetTooltip("Lights effects that use image-based lighting (analytic.fx's PBR and Lambert, .brdf files) and the spectral effects "
+                          "(an image's colours turned into spectra), and fills the background");
     if (kind == 2) {
         sky_edited_ |= ImGui::SliderFloat("sun elevation", &sun_elevation_, 0.0f, 90.0f, "%.0f deg");
         sky_edited_ |= ImGui::SliderFloat("sun temperature", &sun_cct_, 4000.0f, 25000.0f, "%.0f K");
@@ -56,8 +57,9 @@ void EnvironmentPanel::draw(scene::Environment& environment, render::EffectSessi
     if (session)
         if (const std::string warning = session->unused_environment_warning(environment); !warning.empty())
             ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s",
-                               warning.find("point light only") == std::string::npos ? "This environment has no spectral form (the sky, studio and furnace have one;\nimages not yet): the effect stays lit by its light spectrum."
-                                                                  : "This technique is lit by the point light only:\nthe environment fills the background.");
+                               warning.find("point light only") == std::string::npos
+                                   ? "This image's colours are more varied than its three spectra hold:\nwhere a film or grating filters saturated colours,\ncolours may be several CIEDE2000 units off."
+                                   : "This technique is lit by the point light only:\nthe environment fills the background.");
     if (!error_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.35f, 1.0f), "%s", error_.c_str());
     if (!environment.source.empty()) {
         ImGui::SliderFloat("rotation", &environment.rotation_degrees, -180.0f, 180.0f, "%.0f deg");

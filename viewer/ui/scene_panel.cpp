@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "math/arcball.hpp"
 #include "math/transform.hpp"
+#include "render/effect_session.hpp"
 #include "scene/shapes.hpp"
 #include "ui/light_marker.hpp"
 #include "ui/scene_layout.hpp"
@@ -82,6 +83,7 @@ void ViewerScene::add_to(StateHash& h) const {
     h.add(c.pose.distance).add(c.fov_y_degrees).add(c.near_plane).add(c.far_plane);
     const glm::vec3 light = scene.light.world_position();
     h.add(light.x).add(light.y).add(light.z).add(scene.light.color.r).add(scene.light.color.g).add(scene.light.color.b).add(scene.light.intensity).add(scene.light.radius);
+    h.add(scene.light.spectrum);
     h.add(scene.background.r).add(scene.background.g).add(scene.background.b).add(scene.background.a);
     h.add(scene.environment.source).add(scene.environment.rotation_degrees).add(scene.environment.intensity);
     for (const auto& o : objects) {
@@ -90,6 +92,29 @@ void ViewerScene::add_to(StateHash& h) const {
         h.add(p.rotation.w).add(p.rotation.x).add(p.rotation.y).add(p.rotation.z);
         h.add(o.object.scale.x).add(o.object.scale.y).add(o.object.scale.z).add(o.technique).add(static_cast<int>(o.view));
     }
+}
+
+void draw_light_spectrum(scene::Light& light, const render::EffectSession* session) {
+    const effect::Parameter* follower = nullptr;
+    if (session)
+        for (const effect::Parameter& p : session->effect().parameters)
+            if (render::EffectSession::follows_scene_light(p)) follower = &p;
+    if (!follower) {
+        if (!light.spectrum.empty()) {
+            ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "No parameter of this effect takes the light's spectrum (%s).", light.spectrum.c_str());
+            if (ImGui::SmallButton("clear the light spectrum")) light.spectrum.clear();
+        }
+        return;
+    }
+    const char* own = "the effect's own";
+    if (ImGui::BeginCombo("light spectrum", light.spectrum.empty() ? own : light.spectrum.c_str())) {
+        if (ImGui::Selectable(own, light.spectrum.empty())) light.spectrum.clear();
+        for (const std::string& name : follower->ui.items)
+            if (ImGui::Selectable(name.c_str(), name == light.spectrum)) light.spectrum = name;
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The light's spectrum in every spectral effect: it overrides the effect's '%s' while set", follower->ui.label.empty() ? follower->name.c_str() : follower->ui.label.c_str());
 }
 
 void draw_scene_panel(ViewerScene& view, const std::string& technique, bool has_effect, const std::string& light_warning,

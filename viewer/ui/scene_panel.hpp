@@ -15,6 +15,10 @@
 #include "scene/scene.hpp"
 #include "ui/render_schedule.hpp"
 
+namespace fxview::render {
+class EffectSession;
+}
+
 namespace fxview::ui {
 
 // What each object shows: the effect (with its own technique) or one of the built-in views.
@@ -51,6 +55,10 @@ struct ViewerScene {
 // `light_warning` (EffectSession::unused_light_radius_warning) is noted under the light's radius.
 void draw_scene_panel(ViewerScene& view, const std::string& technique, bool has_effect, const std::string& light_warning,
                       std::string& status);
+
+// The light's spectrum (scene::Light::spectrum): "the effect's own" or a library name, listed from
+// the effect's parameter that follows it; where the effect has none, a note that it changes nothing.
+void draw_light_spectrum(scene::Light& light, const render::EffectSession* session);
 
 // The light as a small sun where it projects into the render view; off screen (or behind the camera,
 // or in its plane) a sun with an arrow on the view's edge, pointing to it.

@@ -144,6 +144,7 @@ void Viewer::draw_ui(int window_width, int window_height) {
         if (ImGui::BeginTabItem("Scene", nullptr, tab_flags("Scene"))) {
             draw_scene_panel(view_, session() ? session()->technique() : "", session() != nullptr,
                              session() ? session()->unused_light_radius_warning(view_.scene.light) : "", status_);
+            draw_light_spectrum(view_.scene.light, session());
             environment_panel_.draw(view_.scene.environment, session());
             ImGui::EndTabItem();
         }
