@@ -9,6 +9,9 @@
 #include "spectral/color_difference.hpp"
 #include "spectral/level_of_detail.hpp"
 #include "spectral/rgb_uplift.hpp"
+#include "test_support.hpp"
+
+#include <nlohmann/json.hpp>
 
 using namespace fxview;
 using namespace fxview::spectral;
@@ -151,4 +154,14 @@ TEST_CASE("a colourful image is held less well by three spectra, and the error s
     MESSAGE("projection error of six hues ", error);
     CHECK(error > 0.01);  // not exact, and measured as such
     CHECK(error < 0.5);
+}
+
+TEST_CASE("fxview spectra uplift shows a colour's spectrum and its colour back") {
+    const fxview::test::Result red = fxview::test::run("spectra uplift 1,0,0 --json");
+    REQUIRE(red.exit_code == 0);
+    const auto json = nlohmann::json::parse(red.out);
+    CHECK(std::abs(json["xy"][0].get<double>() - 0.64) < 2e-3);  // sRGB red (IEC 61966-2-1)
+    CHECK(std::abs(json["xy"][1].get<double>() - 0.33) < 2e-3);
+    CHECK(json["delta_e2000"].get<double>() < 0.1);
+    CHECK(fxview::test::run("spectra uplift 1,2").exit_code == 2);
 }

@@ -1,7 +1,9 @@
 // `fxview spectra ...`: the seed's SpectralLibrarian and CIEXYZ2Texture as subcommands.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdlib>
+#include <fstream>
 #include <filesystem>
 #include <iostream>
 
@@ -17,6 +19,8 @@
 #include "spectral/level_of_detail.hpp"
 #include "spectral/library.hpp"
 #include "spectral/packing.hpp"
+#include "spectral/color_difference.hpp"
+#include "spectral/rgb_uplift.hpp"
 
 namespace fxview::app {
 
@@ -76,9 +80,10 @@ CommandRunner add_spectra_command(CLI::App& app) {
         std::string size = "900x520";
         std::string light = "D65";
         double film_nm = -1;
+        std::string rgb;
     };
     auto o = std::make_shared<Options>();
-    CLI::App* spectra = app.add_subcommand("spectra", "Spectral library tools: list, xyz, pack, cmf, plot, lod, film-error");
+    CLI::App* spectra = app.add_subcommand("spectra", "Spectral library tools: list, xyz, pack, cmf, plot, lod, film-error, uplift");
     spectra->require_subcommand(1);
     spectra->add_option("--library", o->library, "Spectral library file")->capture_default_str();
 
@@ -93,6 +98,11 @@ CommandRunner add_spectra_command(CLI::App& app) {
     xyz->add_option("--step", o->step, "Wavelength step (nm)")->capture_default_str()->check(CLI::Range(1, 100));
     xyz->add_option("--mapping", o->mapping, "Out-of-gamut handling: clip, desaturate, scale")->capture_default_str();
     xyz->add_flag("--json", o->json, "Print JSON");
+
+    CLI::App* uplift = spectra->add_subcommand("uplift", "The spectrum fxview gives a linear sRGB colour (Jakob & Hanika 2019), and its colour back");
+    uplift->add_option("rgb", o->rgb, "Linear sRGB R,G,B (a radiance: any scale; negative channels count as 0)")->required();
+    uplift->add_option("--out,-o", o->out, "Also write the spectrum at 1 nm, 360-830, as CSV (nm,value)");
+    uplift->add_flag("--json", o->json, "Print JSON");
 
     CLI::App* pack = spectra->add_subcommand("pack", "Pack the library into the spectrum texture (512 samples, 324-835 nm)");
     pack->add_option("--format", o->format, "8, 16F or 32F")->capture_default_str();
@@ -176,11 +186,46 @@ CommandRunner add_spectra_command(CLI::App& app) {
     film_error->add_option("--angle-step", film->angle_step, "Angle step (degrees; 89 is always included)")->capture_default_str();
     film_error->add_flag("--json", film->json, "Print the table as JSON");
 
-    return [o, list, xyz, pack, cmf, plot, lod, run_lod, film, film_error] {
+    return [o, list, xyz, pack, cmf, plot, lod, run_lod, film, film_error, uplift] {
         if (lod->parsed()) return run_lod(*o);
         if (film_error->parsed()) {
             film->library = o->library;
             return run_film_error(*film);
+        }
+        if (uplift->parsed()) {
+            const std::vector<double> c = parse_doubles("rgb", o->rgb, 3);
+            const spectral::Observer observer = spectral::load_observer("1931");
+            const spectral::UpliftFit fit(observer);
+            const spectral::UpliftedRadiance u = spectral::uplift_radiance({c[0], c[1], c[2]});
+            spectral::Spectrum s;
+            for (int nm = spectral::UpliftFit::kFirstNm; nm <= spectral::UpliftFit::kLastNm; ++nm) s[nm] = u.value(nm, fit.illuminant());
+            const spectral::Vec3 xyz = spectral::spectrum_to_xyz(s, observer);
+            const spectral::Vec3 back = spectral::xyz_to_linear_srgb_unclipped(xyz);
+            const double m = std::max({c[0], c[1], c[2], 1e-300});
+            // CIEDE2000 of the colour and its round trip, both scaled so that the largest channel is 1.
+            const auto lab = [&](const spectral::Vec3& rgb) { return fit.lab_of_rgb({rgb[0] / m, rgb[1] / m, rgb[2] / m}); };
+            const double error = spectral::delta_e_2000(lab({std::max(c[0], 0.0), std::max(c[1], 0.0), std::max(c[2], 0.0)}), lab(back));
+            if (!o->out.empty()) {
+                std::ofstream csv(o->out);
+                csv << "nm,value\n";
+                for (int nm = spectral::UpliftFit::kFirstNm; nm <= spectral::UpliftFit::kLastNm; ++nm) csv << nm << "," << s[nm] << "\n";
+                if (!csv) throw Error(o->out + ": cannot write");
+            }
+            const auto xy = spectral::chromaticity(xyz);
+            if (o->json) {
+                std::cout << nlohmann::json{{"rgb", c}, {"scale", u.scale}, {"coefficients", {u.shape.c0, u.shape.c1, u.shape.c2}},
+                                            {"xy", {xy[0], xy[1]}}, {"rgb_back", {back[0], back[1], back[2]}}, {"delta_e2000", error}}
+                                 .dump(2)
+                          << "\n";
+            } else {
+                std::printf("spectrum of %s: 2m S(c0 t^2 + c1 t + c2) D65(nm), m = %g (the largest channel), t = (nm - 360) / 470,\n"
+                            "  S(x) = 1/2 + x / (2 sqrt(1 + x^2)); c = %.6g, %.6g, %.6g\n",
+                            o->rgb.c_str(), u.scale / 2.0, u.shape.c0, u.shape.c1, u.shape.c2);
+                std::printf("colour back: %.6g, %.6g, %.6g (x %.5f, y %.5f); CIEDE2000 %.3g from the colour asked for\n", back[0], back[1], back[2],
+                            xy[0], xy[1], error);
+                for (int nm = 380; nm <= 780; nm += 40) std::printf("  %d nm  %.5g\n", nm, s[nm]);
+            }
+            return 0;
         }
         if (list->parsed()) {
             const spectral::SpectralLibrary library = spectral::load_library(o->library);
