@@ -70,6 +70,12 @@ for environment in sky studio; do
 done
 "$fxview" bench effects/spectral/wavelength.fx --techniques Lambert,Phong,Blinn --frames 5 --environment studio | tee "$out/bench-wavelength-studio.md"
 "$fxview" compare effects/spectral/wavelength.fx --light-radius 1 --ground-truth --size 64x64 --json | tee "$out/compare-wavelength-lamp.jsonl" || true
+# Issue #25 item 3: films of varying thickness (the damped series) against the thickness-averaged film,
+# and the scene light's spectrum followed by the spectral effects.
+for t in FresnelFourier BubbleFourier; do
+  "$fxview" compare effects/spectral/thinfilm.fx -t "$t" --set ThicknessSpread=100 --ground-truth --size 64x64 --json | tee -a "$out/compare-film-spread.jsonl" || true
+done
+"$fxview" compare effects/spectral/wavelength.fx -t Phong --light-spectrum F11 --size 64x64 --json | tee "$out/compare-light-spectrum.jsonl" || true
 # Issue #25 item 2: an RGB image uplifted to spectra (Jakob & Hanika) lighting films, lobes and orders,
 # against the CPU reference and each direction's own uplifted spectrum.
 for t in "thinfilm.fx BubbleFourier" "wavelength.fx Phong" "cd.fx Orders"; do

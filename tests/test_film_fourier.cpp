@@ -10,6 +10,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <tuple>
 
 #include "reference/film_fourier.hpp"
 #include "spectral/color_difference.hpp"
@@ -217,4 +218,55 @@ TEST_CASE("films under a weighted sum of three spectra follow the 1 nm integral 
     REQUIRE(black);
     CHECK((*black)[0] == 0.0);
     CHECK((*black)[1] == 0.0);
+}
+
+// A film whose thickness varies within a pixel (ThicknessSpread): each term damped by the Gaussian
+// average of its phase, with the first-order correction across the channel's frequencies. Checked
+// against an independent method: the 1 nm transfer-matrix colour averaged over the thicknesses
+// themselves (composite Simpson over ±6σ, cut at 0). Measured (D65, CIE 1931, soap films 200-1000 nm,
+// 0-70°): mean / max CIEDE2000 0.019 / 0.040 at σ 20 nm, 0.11 / 0.28 at 50, 0.16 / 0.59 at 100; the
+// bounds leave room of 1.4-2.7x. Without the correction (the carrier damped alone) the sphere at σ 30
+// measured a mean of 0.64-0.89; ignoring the spread altogether is tens of units off.
+TEST_CASE("a film's spread of thicknesses: the damped series follows the colour averaged over the thicknesses") {
+    const Fixture& f = fixture();
+    const int index = f.library.index_of("D65");
+    const spectral::Spectrum& d65 = f.spectra[static_cast<size_t>(index)].spectrum;
+    spectral::Vec3 table_white{};
+    for (size_t c = 0; c < 3; ++c) table_white[c] = spectral::fourier_lookup(f.table, 0, index, 0.0)[c].real();
+    const spectral::Vec3 exact_white = spectral::SensitivityTransform(f.cie1931, d65).white();
+    std::mt19937 random(20261206);
+    std::uniform_real_distribution<double> thickness(200.0, 1000.0), angle(0.0, 70.0);
+    for (const auto& [spread, mean_bound, max_bound] : {std::tuple{20.0, 0.03, 0.1}, std::tuple{50.0, 0.15, 0.6}, std::tuple{100.0, 0.4, 1.6}}) {
+        double sum = 0.0, worst = 0.0;
+        int count = 0;
+        for (int i = 0; i < 40; ++i) {
+            reference::SingleFilm film{1.0, 1.33, {1.0, 0.0}, thickness(random), std::cos(angle(random) * std::numbers::pi / 180)};
+            film.thickness_spread_nm = spread;
+            const auto series = reference::film_xyz_fourier_table(f.table, 0, index, film, {});
+            if (!series) continue;
+            // The truth: Simpson over the thicknesses, steps of 8 nm (a sixteenth of the fastest fringe).
+            spectral::Vec3 averaged{};
+            double weights = 0.0;
+            const int intervals = 2 * static_cast<int>(std::ceil(6.0 * spread / 8.0));
+            for (int k = 0; k <= intervals; ++k) {
+                const double z = -6.0 * spread + 12.0 * spread * k / intervals;
+                reference::SingleFilm at = film;
+                at.thickness_nm = film.thickness_nm + z;
+                if (at.thickness_nm < 0.0) continue;
+                const double w = (k == 0 || k == intervals ? 1.0 : k % 2 == 1 ? 4.0 : 2.0) * std::exp(-0.5 * z * z / (spread * spread));
+                const spectral::Vec3 xyz = reference::film_xyz_exact(f.cie1931, d65, at);
+                for (size_t c = 0; c < 3; ++c) averaged[c] += w * xyz[c];
+                weights += w;
+            }
+            for (double& v : averaged) v /= weights;
+            const double e = spectral::delta_e_2000(spectral::xyz_to_lab(*series, table_white), spectral::xyz_to_lab(averaged, exact_white));
+            sum += e;
+            worst = std::max(worst, e);
+            ++count;
+        }
+        MESSAGE("spread ", spread, " nm: mean ", sum / count, " max ", worst, " over ", count, " films");
+        CHECK(count > 30);
+        CHECK(sum / count < mean_bound);
+        CHECK(worst < max_bound);
+    }
 }

@@ -211,7 +211,7 @@ TEST_CASE("docs/preset.schema.json and fxview agree: every scene key it lists lo
     std::ifstream in(kEffects + "/../docs/preset.schema.json");
     const nlohmann::json schema = nlohmann::json::parse(in);
     const nlohmann::json& scene = schema["properties"]["scene"]["properties"];
-    REQUIRE(scene.size() == 7);
+    REQUIRE(scene.size() == 8);
     const std::string effect = kEffects + "/brdf/analytic.fx";
     for (const auto& [key, rule] : scene.items()) {
         // A valid value from the schema itself: its first enum entry, its minimum, or a built-in name.

@@ -19,6 +19,9 @@
 uniform sampler2D FilmFourier < string ResourceName = "spectral:fourier"; string Format = "32F"; string Filter = "nearest"; string Wrap = "clamp"; >;
 uniform int SeriesOrder < string UIName = "Series terms"; int UIMin = 1; int UIMax = 64; string UIGroup = "Fourier series";
                           string UIHelp = "At most this many terms of the interference series; terms too small to matter are skipped, and where this many would leave more than 0.1 % of reflectance out (near grazing incidence) the exact wavelength sum is used"; > = 16;
+uniform float ThicknessSpread < string UIName = "Thickness spread"; float UIMin = 0; float UIMax = 300; float UIStep = 1; string UIUnits = "nm";
+                               string UIGroup = "Fourier series";
+                               string UIHelp = "A film whose thickness varies within what a pixel sees (a Gaussian of this standard deviation about Thickness): each term of the series is averaged over it, so thick films wash out towards white as real ones do (Belcour & Barla 2017)"; > = 0.0;
 uniform int Polarisation < string UIName = "Polarisation"; string UIWidget = "combo"; string UIItems = "unpolarised|s (TE)|p (TM)"; string UIGroup = "Fourier series";
                            string UIHelp = "Polarisation of the incident light (Fourier techniques)"; > = 0;
 
@@ -33,8 +36,12 @@ const float kSeriesTailLimit = 1e-3, kSeriesTermLimit = 1e-5;  // viewer/referen
 uniform sampler2D FilmSkyFourier < string ResourceName = "environment:fourier"; string Format = "32F"; string Filter = "nearest"; string Wrap = "clamp"; >;
 
 // F(D) = G(D) e^{i 2π D ν}: the stored envelope G, interpolated, times the carrier at the
-// sensitivity's mean frequency ν (per channel). 0 beyond the table: the incoherent limit.
-void sensitivity_at(sampler2D table, int row, vec3 centre, float path, out vec3 re, out vec3 im) {
+// sensitivity's mean frequency ν (per channel). 0 beyond the table: the incoherent limit. Averaged
+// over path differences spread as a Gaussian of standard deviation σ = `spread` about D, F becomes
+// ∫ S(ν') e^{i2πν'D} exp(−2π²ν'²σ²) dν'; with the Gaussian expanded to first order about ν (the rest
+// of the channel's frequencies), that is exp(−2π²ν²σ²) (G + i 2π σ² ν G') e^{i2πDν}, G' the
+// envelope's slope between the two samples.
+void sensitivity_at(sampler2D table, int row, vec3 centre, float path, float spread, out vec3 re, out vec3 im) {
     float x = path / kFourierStep;
     re = vec3(0.0);
     im = vec3(0.0);
@@ -44,7 +51,16 @@ void sensitivity_at(sampler2D table, int row, vec3 centre, float path, out vec3 
     vec3 envelope_re = mix(texelFetch(table, ivec2(i, row), 0).rgb, texelFetch(table, ivec2(i + 1, row), 0).rgb, t);
     vec3 envelope_im = mix(texelFetch(table, ivec2(i, row + 1), 0).rgb, texelFetch(table, ivec2(i + 1, row + 1), 0).rgb, t);
     vec3 angle = kTwoPi * fract(path * centre);
-    vec3 c = cos(angle), s = sin(angle);
+    vec3 phase_spread = kTwoPi * centre * spread;
+    vec3 damping = exp(-0.5 * phase_spread * phase_spread);
+    if (spread > 0.0) {
+        vec3 tilt = kTwoPi * spread * spread * centre / kFourierStep;  // times the envelope's step
+        vec3 slope_re = texelFetch(table, ivec2(i + 1, row), 0).rgb - texelFetch(table, ivec2(i, row), 0).rgb;
+        vec3 slope_im = texelFetch(table, ivec2(i + 1, row + 1), 0).rgb - texelFetch(table, ivec2(i, row + 1), 0).rgb;
+        envelope_re -= tilt * slope_im;
+        envelope_im += tilt * slope_re;
+    }
+    vec3 c = cos(angle) * damping, s = sin(angle) * damping;
     re = envelope_re * c - envelope_im * s;
     im = envelope_re * s + envelope_im * c;
 }
@@ -120,6 +136,7 @@ bool fourier_film_xyz(Film f, vec2 n2, sampler2D table, SeriesLight light, out v
     float brightest = max(white.x, max(white.y, white.z));
     if (!(brightest > 0.0)) return true;  // no light (a black direction of the sky): black
     float path = 2.0 * FilmIndex * f.thickness * cos1;
+    float path_spread = 2.0 * FilmIndex * ThicknessSpread * cos1;  // term m: m D spread by m path_spread
     // What SeriesOrder terms leave out, relative to the light, is at most
     // 2 |C_{order+1}| / (1 − |x|) · (the largest |F| from (order+1) D on). Past kSeriesTailLimit (thin
     // films near grazing incidence, |x| -> 1) the exact sum serves instead.
@@ -140,7 +157,7 @@ bool fourier_film_xyz(Film f, vec2 n2, sampler2D table, SeriesLight light, out v
         vec2 c = c_s + c_p;
         for (int k = 0; k < light.count; ++k) {
             vec3 re, im;
-            sensitivity_at(table, light.row + k * kFourierRowsPerTable, centres[k], float(m) * path, re, im);
+            sensitivity_at(table, light.row + k * kFourierRowsPerTable, centres[k], float(m) * path, float(m) * path_spread, re, im);
             xyz += light.weights[k] * 2.0 * (c.x * re - c.y * im);
         }
         c_s = c_mul(c_s, x_s);

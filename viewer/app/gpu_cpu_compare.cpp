@@ -162,7 +162,8 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
         std::array<double, 4> truth{}, second_truth{};  // two independent estimates of the integral
     };
     const bool with_truth = ground_truth && ref->truth &&
-                            (!request.scene.environment.source.empty() || (ref->truth_with_sized_light && request.scene.light.radius > 0.0f));
+                            (!request.scene.environment.source.empty() || (ref->truth_with_sized_light && request.scene.light.radius > 0.0f) ||
+                             (ref->truth_wanted && ref->truth_wanted(reference_context)));
     std::vector<Shaded> shaded(static_cast<size_t>(request.width) * static_cast<size_t>(request.height));
     const auto input_at = [&](int x, int y) {
         reference::ShadingInput input;

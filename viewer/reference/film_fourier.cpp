@@ -42,10 +42,11 @@ std::optional<spectral::Vec3> film_xyz_fourier_table(const spectral::PackedTextu
         return std::pair{technique.weight_s * s.c[static_cast<size_t>(m)], technique.weight_p * p.c[static_cast<size_t>(m)]};
     };
     const double path = 2.0 * film.index * film.thickness_nm * s.cos_film;
-    const auto lookup = [&](double path_difference) {
+    const double path_spread = 2.0 * film.index * film.thickness_spread_nm * s.cos_film;
+    const auto lookup = [&](double path_difference, double spread = 0.0) {
         spectral::ComplexXyz sum{};
         for (int k = 0; k < light.count; ++k) {
-            const spectral::ComplexXyz f = spectral::fourier_lookup(table, observer_row, light.first + k, path_difference);
+            const spectral::ComplexXyz f = spectral::fourier_lookup(table, observer_row, light.first + k, path_difference, spread);
             for (size_t i = 0; i < 3; ++i) sum[i] += light.weights[static_cast<size_t>(k)] * f[i];
         }
         return sum;
@@ -81,7 +82,7 @@ std::optional<spectral::Vec3> film_xyz_fourier_table(const spectral::PackedTextu
             break;
         }
         const auto [c_s, c_p] = coefficient(m);
-        const spectral::ComplexXyz transform = lookup(m * path);
+        const spectral::ComplexXyz transform = lookup(m * path, m * path_spread);
         for (size_t i = 0; i < 3; ++i) xyz[i] += 2.0 * ((c_s + c_p) * transform[i]).real();
     }
     return xyz;

@@ -17,6 +17,9 @@ struct SingleFilm {
     optics::Complex substrate{1.0, 0.0};  // n + iκ
     double thickness_nm = 300;
     double cos_outer = 1.0;  // cos θ0 of the light in the outer medium
+    // The standard deviation of a Gaussian spread of thicknesses about thickness_nm (a film that varies
+    // within a pixel): the series' terms averaged over it (film_xyz_fourier_table); 0 for none.
+    double thickness_spread_nm = 0.0;
 };
 
 spectral::Vec3 film_xyz_fourier(const spectral::SensitivityTransform& transform, const SingleFilm& film, int order);

@@ -68,6 +68,9 @@ struct Reference {
     std::string truth_method = "the Monte Carlo integral";  // what `truth` computes, as compare names it
     // `truth` integrates a sphere light too: it runs without an environment when the light has a size.
     bool truth_with_sized_light = false;
+    // Whether the truth measures an approximation of its own in this context even without an environment
+    // or a sized light (a film's thickness spread); empty: no.
+    std::function<bool(const ReferenceContext&)> truth_wanted;
 };
 
 // The largest change of any colour channel when the pixel's normal turns by `angle` (radians) in

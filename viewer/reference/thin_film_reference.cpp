@@ -248,7 +248,7 @@ std::array<double, 4> fourier_colour(const Film& f, const ReferenceContext& c, o
     technique.order = static_cast<int>(c.number("SeriesOrder"));
     technique.weight_s = polarisation == 2 ? 0.0 : polarisation == 1 ? 1.0 : 0.5;
     technique.weight_p = polarisation == 1 ? 0.0 : 1.0 - technique.weight_s;
-    const reference::SingleFilm film{f.n0, f.n1, substrate, f.thickness, f.cos0};
+    const reference::SingleFilm film{f.n0, f.n1, substrate, f.thickness, f.cos0, c.number("ThicknessSpread")};
     // Under the sky: the weighted series of its three spectra (environment:fourier), as on the GPU.
     const auto series = f.sky ? film_xyz_fourier_table(*f.environment->spectral_fourier(), setup.observer,
                                                        TableLight{0, 3, {f.sky->x, f.sky->y, f.sky->z}}, film, technique)
@@ -294,18 +294,47 @@ Reference fourier_reference(bool free_film) {
 // bilinear reads and the techniques' formulas. Deterministic (its two estimates agree).
 using StackAt = std::function<optics::Stack(const Film&, int nm)>;
 
-Reference with_sky_truth(Reference r, StackAt stack_at_nm) {
-    r.truth = [shade = r.shade, stack_at_nm](const ShadingInput& in, const ReferenceContext& c, unsigned) {
+// The reflectance of a film whose thickness is spread as a Gaussian of standard deviation `spread`
+// about f.thickness, cut at 0 (no film is thinner): composite Simpson over ±6σ, steps of at most
+// 360 / (32 n1) nm (a sixteenth of the fastest fringe's period at 360 nm). Independent of the
+// technique's damped series.
+double spread_reflectance(const Film& f, double spread, int nm, const StackAt& stack_at_nm) {
+    const int intervals = 2 * static_cast<int>(std::ceil(6.0 * spread / (360.0 / (32.0 * f.n1))));
+    const double step = 12.0 * spread / intervals;
+    double sum = 0.0, weights = 0.0;
+    for (int i = 0; i <= intervals; ++i) {
+        const double z = -6.0 * spread + i * step, thickness = f.thickness + z;
+        if (thickness < 0.0) continue;
+        const double w = (i == 0 || i == intervals ? 1.0 : i % 2 == 1 ? 4.0 : 2.0) * std::exp(-0.5 * z * z / (spread * spread));
+        Film g = f;
+        g.thickness = thickness;
+        sum += w * optics::transfer_matrix_reflectance(stack_at_nm(g, nm), nm, f.cos0);
+        weights += w;
+    }
+    return weights > 0.0 ? sum / weights : 0.0;
+}
+
+// `spread_thickness`: the technique reads ThicknessSpread (the Fourier films): the truth averages the
+// film over it, under the environment and under the light spectrum alike.
+Reference with_sky_truth(Reference r, StackAt stack_at_nm, bool spread_thickness = false) {
+    r.truth = [shade = r.shade, stack_at_nm, spread_thickness](const ShadingInput& in, const ReferenceContext& c, unsigned) {
         const Film f = film(in, c);
-        if (!f.sky) return shade(in, c);  // lit by the light spectrum: nothing the reference approximates
+        const double spread = spread_thickness ? c.number("ThicknessSpread") : 0.0;
+        if (!f.sky && !(spread > 0.0)) return shade(in, c);  // lit by the light spectrum: nothing the reference approximates
         const glm::dvec3 n = glm::normalize(in.normal), v = glm::normalize(in.camera - in.position);
-        const glm::dvec3 weights = f.environment->exact_spectral_weights(2.0 * glm::dot(n, v) * n - v);
-        const SpectralSetup every_nm = every_nm_setup(c);
+        const glm::dvec3 weights = f.sky ? f.environment->exact_spectral_weights(2.0 * glm::dot(n, v) * n - v) : glm::dvec3(0.0);
+        const SpectralSetup setup = spectral_setup(c), every_nm = every_nm_setup(c);
+        const int light = static_cast<int>(c.number("LightSpectrum"));
         return to_rgba(integrate(every_nm, true, [&](int nm) {
-            return f.environment->exact_spectral_radiance(weights, nm) * optics::transfer_matrix_reflectance(stack_at_nm(f, nm), nm, f.cos0);
+            const double radiance = f.sky ? f.environment->exact_spectral_radiance(weights, nm) : light_at(f, setup, light, nm);
+            return radiance * (spread > 0.0 ? spread_reflectance(f, spread, nm, stack_at_nm)
+                                            : optics::transfer_matrix_reflectance(stack_at_nm(f, nm), nm, f.cos0));
         }), every_nm.mapping);
     };
-    r.truth_method = "the exact film mirroring the environment's model (an image: each direction's own uplifted spectrum; 1 nm, characteristic matrices)";
+    if (spread_thickness) r.truth_wanted = [](const ReferenceContext& c) { return c.number("ThicknessSpread") > 0.0; };
+    r.truth_method = spread_thickness ? "the exact film mirroring the environment's model or lit by the light spectrum, averaged over its spread of "
+                                        "thicknesses (an image: each direction's own uplifted spectrum; 1 nm, characteristic matrices, Simpson over ±6σ)"
+                                      : "the exact film mirroring the environment's model (an image: each direction's own uplifted spectrum; 1 nm, characteristic matrices)";
     return r;
 }
 
@@ -382,8 +411,8 @@ std::map<std::string, Reference> thin_film_references() {
         return f.dispersion_a == 0.0 && f.dispersion_b == 0.0 ? fixed_stack(f) : dispersive_stack(f);
     }, 5e-5, kPhaseWhy), dispersed));
     all.emplace("MultiLayerFaster", with_sky_truth(make(fixed_stack, 5e-5, kPhaseWhy), dispersed));
-    all.emplace("FresnelFourier", with_sky_truth(fourier_reference(false), single_film_stack));
-    all.emplace("BubbleFourier", with_sky_truth(fourier_reference(true), free_film_stack));
+    all.emplace("FresnelFourier", with_sky_truth(fourier_reference(false), single_film_stack, true));
+    all.emplace("BubbleFourier", with_sky_truth(fourier_reference(true), free_film_stack, true));
     return all;
 }
 

@@ -166,7 +166,7 @@ double fourier_tail_bound(const PackedTexture& table, int observer_row, int spec
     return std::max({tail[0], tail[1], tail[2]});
 }
 
-ComplexXyz fourier_lookup(const PackedTexture& table, int observer_row, int spectrum, double path_difference_nm) {
+ComplexXyz fourier_lookup(const PackedTexture& table, int observer_row, int spectrum, double path_difference_nm, double path_spread_nm) {
     const int row = table_row(table, observer_row, spectrum);
     const double x = path_difference_nm / kFourierStepNm;
     ComplexXyz f{};
@@ -177,9 +177,14 @@ ComplexXyz fourier_lookup(const PackedTexture& table, int observer_row, int spec
     const Vec3 im0 = read(table, i, row + 1), im1 = read(table, i + 1, row + 1);
     const Vec3 centre = read(table, 0, row + 2);
     for (size_t c = 0; c < 3; ++c) {
-        const std::complex<double> envelope((1 - t) * re0[c] + t * re1[c], (1 - t) * im0[c] + t * im1[c]);
+        std::complex<double> envelope((1 - t) * re0[c] + t * re1[c], (1 - t) * im0[c] + t * im1[c]);
+        if (path_spread_nm > 0.0) {  // the first-order term of the spread (the header)
+            const double tilt = kTwoPi * path_spread_nm * path_spread_nm * centre[c] / kFourierStepNm;
+            envelope += std::complex<double>(-tilt * (im1[c] - im0[c]), tilt * (re1[c] - re0[c]));
+        }
         const double cycles = path_difference_nm * centre[c];
-        f[c] = envelope * std::polar(1.0, kTwoPi * (cycles - std::floor(cycles)));
+        const double phase_spread = kTwoPi * centre[c] * path_spread_nm;
+        f[c] = envelope * std::polar(std::exp(-0.5 * phase_spread * phase_spread), kTwoPi * (cycles - std::floor(cycles)));
     }
     return f;
 }

@@ -35,8 +35,11 @@ constexpr double kFourierBeyondNm = 65536.0;  // twice the table's reach: F11's 
 PackedTexture fourier_table(const std::vector<NamedSpectrum>& spectra, const Observer& cie1931, const Observer& cie1964);
 
 // F(D) for one observer row (0 = CIE 1931, 1 = CIE 1964) and spectrum, interpolated from the stored
-// (float) table in double, as the shader does: what the CPU reference uses.
-ComplexXyz fourier_lookup(const PackedTexture& table, int observer_row, int spectrum, double path_difference_nm);
+// (float) table in double, as the shader does: what the CPU reference uses. `path_spread_nm` = σ: the
+// mean of F over path differences spread as a Gaussian of that standard deviation,
+// ∫ S(ν') e^{i2πν'D} exp(−2π²ν'²σ²) dν', its Gaussian expanded to first order about the channel's mean
+// frequency ν: exp(−2π²ν²σ²) (G + i 2π σ² ν G') e^{i2πDν}, G' the envelope's slope between samples.
+ComplexXyz fourier_lookup(const PackedTexture& table, int observer_row, int spectrum, double path_difference_nm, double path_spread_nm = 0.0);
 // The largest |F_c| over all channels at this path difference or any longer one: fourier_lookup's
 // values within the table, the sampled maximum past it (which fourier_lookup returns as 0).
 double fourier_tail_bound(const PackedTexture& table, int observer_row, int spectrum, double path_difference_nm);
