@@ -38,9 +38,9 @@ uniform sampler2D FilmSkyFourier < string ResourceName = "environment:fourier"; 
 // F(D) = G(D) e^{i 2π D ν}: the stored envelope G, interpolated, times the carrier at the
 // sensitivity's mean frequency ν (per channel). 0 beyond the table: the incoherent limit. Averaged
 // over path differences spread as a Gaussian of standard deviation σ = `spread` about D, F becomes
-// ∫ S(ν') e^{i2πν'D} exp(−2π²ν'²σ²) dν'; with the Gaussian expanded to first order about ν (the rest
-// of the channel's frequencies), that is exp(−2π²ν²σ²) (G + i 2π σ² ν G') e^{i2πDν}, G' the
-// envelope's slope between the two samples.
+// ∫ S(ν') e^{i2πν'D} exp(−2π²ν'²σ²) dν'; with the Gaussian expanded to second order about ν (the rest
+// of the channel's frequencies), that is exp(−2π²ν²σ²) (G + i 2π σ² ν G' + ½ σ² (1 − (2πνσ)²) G'')
+// e^{i2πDν}, G' the envelope's slope between the two samples, G'' its second difference.
 void sensitivity_at(sampler2D table, int row, vec3 centre, float path, float spread, out vec3 re, out vec3 im) {
     float x = path / kFourierStep;
     re = vec3(0.0);
@@ -57,8 +57,14 @@ void sensitivity_at(sampler2D table, int row, vec3 centre, float path, float spr
         vec3 tilt = kTwoPi * spread * spread * centre / kFourierStep;  // times the envelope's step
         vec3 slope_re = texelFetch(table, ivec2(i + 1, row), 0).rgb - texelFetch(table, ivec2(i, row), 0).rgb;
         vec3 slope_im = texelFetch(table, ivec2(i + 1, row + 1), 0).rgb - texelFetch(table, ivec2(i, row + 1), 0).rgb;
-        envelope_re -= tilt * slope_im;
-        envelope_im += tilt * slope_re;
+        // The second-order term ½ σ² (1 − (2πνσ)²) G'', G'' by the second difference about sample j.
+        int j = max(i, 1);
+        vec3 bend = 0.5 * spread * spread * (1.0 - phase_spread * phase_spread) / (kFourierStep * kFourierStep);
+        vec3 curve_re = texelFetch(table, ivec2(j + 1, row), 0).rgb - 2.0 * texelFetch(table, ivec2(j, row), 0).rgb + texelFetch(table, ivec2(j - 1, row), 0).rgb;
+        vec3 curve_im = texelFetch(table, ivec2(j + 1, row + 1), 0).rgb - 2.0 * texelFetch(table, ivec2(j, row + 1), 0).rgb +
+                        texelFetch(table, ivec2(j - 1, row + 1), 0).rgb;
+        envelope_re += bend * curve_re - tilt * slope_im;
+        envelope_im += bend * curve_im + tilt * slope_re;
     }
     vec3 c = cos(angle) * damping, s = sin(angle) * damping;
     re = envelope_re * c - envelope_im * s;

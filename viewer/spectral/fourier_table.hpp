@@ -37,8 +37,9 @@ PackedTexture fourier_table(const std::vector<NamedSpectrum>& spectra, const Obs
 // F(D) for one observer row (0 = CIE 1931, 1 = CIE 1964) and spectrum, interpolated from the stored
 // (float) table in double, as the shader does: what the CPU reference uses. `path_spread_nm` = σ: the
 // mean of F over path differences spread as a Gaussian of that standard deviation,
-// ∫ S(ν') e^{i2πν'D} exp(−2π²ν'²σ²) dν', its Gaussian expanded to first order about the channel's mean
-// frequency ν: exp(−2π²ν²σ²) (G + i 2π σ² ν G') e^{i2πDν}, G' the envelope's slope between samples.
+// ∫ S(ν') e^{i2πν'D} exp(−2π²ν'²σ²) dν', its Gaussian expanded to second order about the channel's mean
+// frequency ν: exp(−2π²ν²σ²) (G + i 2π σ² ν G' + ½ σ² (1 − (2πνσ)²) G'') e^{i2πDν}, G' the envelope's
+// slope between samples, G'' its second difference about the sample below (the first above at 0).
 ComplexXyz fourier_lookup(const PackedTexture& table, int observer_row, int spectrum, double path_difference_nm, double path_spread_nm = 0.0);
 // The largest |F_c| over all channels at this path difference or any longer one: fourier_lookup's
 // values within the table, the sampled maximum past it (which fourier_lookup returns as 0).
