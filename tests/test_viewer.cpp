@@ -451,6 +451,26 @@ TEST_CASE("the viewer lights and shows the environment as render does, through t
     CHECK(texel(load_png(after), 2, 2)[1] > texel(view, 2, 2)[1] + 0.05f);
 }
 
+TEST_CASE("the light's spectrum set by script (as the Scene tab) gives render --light-spectrum's picture; an unknown name is refused") {
+    const std::string effect = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/wavelength.fx";
+    const std::string shot = temp_path("light-view.png"), rendered = temp_path("light-render.png"), own = temp_path("light-own.png");
+    const std::string script = temp_path("light-script.txt");
+    std::ofstream(script) << "light-spectrum F11\nrender-screenshot " << shot << "\nlight-spectrum Candle\nlight-spectrum none\nrender-screenshot " << own << "\n";
+    const Result r = run("view " + effect + " -t Phong --size 48x48 --script " + script + " --frames 2");
+    CAPTURE(r.err);
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("light spectrum 'Candle' is not in the spectral library") != std::string::npos);
+    REQUIRE(run("render " + effect + " -t Phong --light-spectrum F11 --size 48x48 --out " + rendered).exit_code == 0);
+    const auto view = load_png(shot), render = load_png(rendered), back = load_png(own);
+    bool differs = false;
+    for (const auto& [x, y] : {std::pair{24, 24}, std::pair{16, 20}, std::pair{30, 30}})
+        for (int c = 0; c < 3; ++c) {
+            CHECK(std::abs(texel(view, x, y)[c] - texel(render, x, y)[c]) <= 1.0f / 255.0f + 1e-6f);
+            differs = differs || std::abs(texel(back, x, y)[c] - texel(view, x, y)[c]) > 2.0f / 255.0f;
+        }
+    CHECK(differs);  // "none" gives the effect its own D65 back
+}
+
 TEST_CASE("a large UI scale keeps the tabs' names whole; a shrunk window gets a share of the panel, its width comes back") {
     const std::string script = temp_path("panel-script.txt");
     std::ofstream(script) << "ui-state\nwindow 640 480\nui-state\nwindow 1280 800\nui-state\n";

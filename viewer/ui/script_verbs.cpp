@@ -87,6 +87,7 @@ void Viewer::perform(const ScriptAction& action) {
         {"brdf-check", &Viewer::verb_brdf_check},
         {"brdf-measured", &Viewer::verb_brdf_measured},
         {"environment", &Viewer::verb_environment},
+        {"light-spectrum", &Viewer::verb_light_spectrum},
         {"exposure", &Viewer::verb_exposure},
         {"tone-map", &Viewer::verb_tone_map},
         {"brdf-view", &Viewer::verb_brdf_view},
@@ -227,6 +228,16 @@ void Viewer::verb_brdf_measured(const ScriptAction& a) {  // as the BRDF tab's L
 
 void Viewer::verb_environment(const ScriptAction& a) {  // as the Scene tab's environment controls
     EnvironmentPanel::apply(view_.scene.environment, a.arguments[0], session());
+}
+
+void Viewer::verb_light_spectrum(const ScriptAction& a) {  // as the Scene tab's light-spectrum combo
+    const std::string name = a.arguments[0] == "none" ? "" : a.arguments[0];
+    if (!name.empty() && session()) {
+        scene::Scene probe = view_.scene;
+        probe.light.spectrum = name;
+        (void)session()->values_for(probe);  // an unknown name: UsageError naming the library, the light unchanged
+    }
+    view_.scene.light.spectrum = name;
 }
 
 void Viewer::verb_exposure(const ScriptAction& a) { display_settings_.exposure_ev = number(a, a.arguments[0]); }
