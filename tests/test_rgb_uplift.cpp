@@ -164,4 +164,15 @@ TEST_CASE("fxview spectra uplift shows a colour's spectrum and its colour back")
     CHECK(std::abs(json["xy"][1].get<double>() - 0.33) < 2e-3);
     CHECK(json["delta_e2000"].get<double>() < 0.1);
     CHECK(fxview::test::run("spectra uplift 1,2").exit_code == 2);
+    // An environment: the ColorChecker room is held within 14 % (docs/spectral.md), its spectra coloured
+    // as the primaries; the sky has its model's spectra, nothing uplifted.
+    const fxview::test::Result room = fxview::test::run("spectra uplift --environment " FXVIEW_SOURCE_EFFECTS_DIR "/../textures/colour_room.hdr --json");
+    REQUIRE(room.exit_code == 0);
+    const auto form = nlohmann::json::parse(room.out);
+    CHECK(form["uplifted"] == true);
+    CHECK(form["projection_error"].get<double>() > 0.1);
+    CHECK(form["projection_error"].get<double>() < 0.2);
+    CHECK(std::abs(form["spectra"][2]["xy"][0].get<double>() - 0.15) < 2e-3);  // the blue primary's spectrum
+    CHECK(nlohmann::json::parse(fxview::test::run("spectra uplift --environment sky --json").out)["uplifted"] == false);
+    CHECK(fxview::test::run("spectra uplift").exit_code == 2);
 }

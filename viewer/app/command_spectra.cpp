@@ -21,6 +21,7 @@
 #include "spectral/packing.hpp"
 #include "spectral/color_difference.hpp"
 #include "spectral/rgb_uplift.hpp"
+#include "lighting/environment_sources.hpp"
 
 namespace fxview::app {
 
@@ -80,7 +81,7 @@ CommandRunner add_spectra_command(CLI::App& app) {
         std::string size = "900x520";
         std::string light = "D65";
         double film_nm = -1;
-        std::string rgb;
+        std::string rgb, environment;
     };
     auto o = std::make_shared<Options>();
     CLI::App* spectra = app.add_subcommand("spectra", "Spectral library tools: list, xyz, pack, cmf, plot, lod, film-error, uplift");
@@ -100,8 +101,11 @@ CommandRunner add_spectra_command(CLI::App& app) {
     xyz->add_flag("--json", o->json, "Print JSON");
 
     CLI::App* uplift = spectra->add_subcommand("uplift", "The spectrum fxview gives a linear sRGB colour (Jakob & Hanika 2019), and its colour back");
-    uplift->add_option("rgb", o->rgb, "Linear sRGB R,G,B (a radiance: any scale; negative channels count as 0)")->required();
-    uplift->add_option("--out,-o", o->out, "Also write the spectrum at 1 nm, 360-830, as CSV (nm,value)");
+    uplift->add_option("rgb", o->rgb, "Linear sRGB R,G,B (a radiance: any scale; negative channels count as 0)");
+    uplift->add_option("--environment", o->environment,
+                       "Instead: an environment (an image, or studio/sky/furnace): the three spectra the spectral effects see it by, and "
+                       "how far they are from its texels' own uplifted spectra");
+    uplift->add_option("--out,-o", o->out, "Also write the spectrum (or the environment's three) at 1 nm, 360-830, as CSV");
     uplift->add_flag("--json", o->json, "Print JSON");
 
     CLI::App* pack = spectra->add_subcommand("pack", "Pack the library into the spectrum texture (512 samples, 324-835 nm)");
@@ -191,6 +195,46 @@ CommandRunner add_spectra_command(CLI::App& app) {
         if (film_error->parsed()) {
             film->library = o->library;
             return run_film_error(*film);
+        }
+        if (uplift->parsed() && o->rgb.empty() == o->environment.empty())
+            throw UsageError("spectra uplift: give R,G,B or --environment FILE, one of them");
+        if (uplift->parsed() && !o->environment.empty()) {
+            const lighting::Environment environment = lighting::make_environment(o->environment, 256);  // as the effects get it
+            const lighting::SpectralForm& form = *environment.spectral;
+            const spectral::Observer observer = spectral::load_observer("1931");
+            nlohmann::json spectra = nlohmann::json::array();
+            std::vector<spectral::Spectrum> curves(3);
+            for (size_t k = 0; k < 3; ++k) {
+                for (int nm = lighting::SpectralForm::kFirstNm; nm <= lighting::SpectralForm::kLastNm; ++nm)
+                    curves[k][nm] = form.spectra[k][static_cast<size_t>(nm - lighting::SpectralForm::kFirstNm)];
+                const spectral::Vec3 xyz = spectral::spectrum_to_xyz(curves[k], observer);
+                const auto xy = spectral::chromaticity(xyz);
+                spectra.push_back({{"xy", {xy[0], xy[1]}}, {"luminance", xyz[1]}});
+            }
+            if (!o->out.empty()) {
+                std::ofstream csv(o->out);
+                csv << "nm,s0,s1,s2\n";
+                for (int nm = lighting::SpectralForm::kFirstNm; nm <= lighting::SpectralForm::kLastNm; ++nm)
+                    csv << nm << "," << curves[0][nm] << "," << curves[1][nm] << "," << curves[2][nm] << "\n";
+                if (!csv) throw Error(o->out + ": cannot write");
+            }
+            if (o->json) {
+                std::cout << nlohmann::json{{"environment", o->environment}, {"uplifted", form.texels_only}, {"projection_error", form.projection_error},
+                                            {"disc_lights", environment.discs.size()}, {"spectra", spectra}}
+                                 .dump(2)
+                          << "\n";
+            } else {
+                std::printf("%s: %s; %zu disc light(s) (a sun or lamp, shaded apart)\n", o->environment.c_str(),
+                            form.texels_only ? "colours uplifted (Jakob & Hanika 2019), held by three spectra of its own" : "spectra from its model",
+                            environment.discs.size());
+                if (form.texels_only)
+                    std::printf("three spectra hold its texels' own spectra within %.1f %% RMS%s\n", 100.0 * form.projection_error,
+                                form.projection_error > 0.05 ? " (above 5 %: films and gratings under it may be several CIEDE2000 off)" : "");
+                for (size_t k = 0; k < 3; ++k)
+                    std::printf("  spectrum %zu: x %.4f, y %.4f, luminance %.3g\n", k, spectra[k]["xy"][0].get<double>(), spectra[k]["xy"][1].get<double>(),
+                                spectra[k]["luminance"].get<double>());
+            }
+            return 0;
         }
         if (uplift->parsed()) {
             const std::vector<double> c = parse_doubles("rgb", o->rgb, 3);
