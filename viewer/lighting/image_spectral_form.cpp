@@ -54,24 +54,13 @@ Eigen::VectorXd shape_of(const glm::dvec3& rgb) {
     return s;
 }
 
-// Linear sRGB of a spectrum at 1 nm (CIE 1931, constant 1 has Y = 1) and its luminance.
-struct Colorimeter {
-    spectral::Observer observer = spectral::load_observer("1931");
-    double ybar = 0.0;
-    Colorimeter() {
-        for (int nm = SpectralForm::kFirstNm; nm <= SpectralForm::kLastNm; ++nm) ybar += observer.y.at(nm);
-    }
-    spectral::Vec3 xyz(const std::vector<double>& s) const {
-        spectral::Vec3 out{0.0, 0.0, 0.0};
-        for (int nm = SpectralForm::kFirstNm; nm <= SpectralForm::kLastNm; ++nm) {
-            const double v = s[static_cast<size_t>(nm - SpectralForm::kFirstNm)] / ybar;
-            out[0] += v * observer.x.at(nm);
-            out[1] += v * observer.y.at(nm);
-            out[2] += v * observer.z.at(nm);
-        }
-        return out;
-    }
-};
+// XYZ of a 1 nm spectrum over 360-830 (constant 1 has Y = 1: SpectralForm's luminance).
+spectral::Vec3 xyz_of(const std::vector<double>& s) {
+    static const spectral::Observer observer = spectral::load_observer("1931");
+    spectral::Spectrum spectrum;
+    for (int nm = SpectralForm::kFirstNm; nm <= SpectralForm::kLastNm; ++nm) spectrum[nm] = s[static_cast<size_t>(nm - SpectralForm::kFirstNm)];
+    return spectral::spectrum_to_xyz(spectrum, observer);
+}
 
 const spectral::UpliftFit& uplift_fit() {
     static const spectral::UpliftFit fit(spectral::load_observer("1931"));
@@ -112,7 +101,6 @@ void add_image_spectral_form(Environment& environment) {
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(moments);
     // The three largest (eigenvalues come in increasing order), as 1 nm spectra under D65.
     const spectral::UpliftFit& fit = uplift_fit();
-    static const Colorimeter colorimeter;
     std::array<std::vector<double>, 3> principal;
     std::array<spectral::Vec3, 3> rgb_of;
     for (int k = 0; k < 3; ++k) {
@@ -123,7 +111,7 @@ void add_image_spectral_form(Environment& environment) {
             const double t = (nm - SpectralForm::kFirstNm - i * kShapeStep) / double(kShapeStep);
             s.push_back(((1.0 - t) * v[i] + t * v[i + 1]) * fit.illuminant()[static_cast<size_t>(nm - SpectralForm::kFirstNm)]);
         }
-        rgb_of[static_cast<size_t>(k)] = spectral::xyz_to_linear_srgb_unclipped(colorimeter.xyz(s));
+        rgb_of[static_cast<size_t>(k)] = spectral::xyz_to_linear_srgb_unclipped(xyz_of(s));
     }
     // Recombine: the spectra of the span whose colours are the primaries.
     Eigen::Matrix3d colours;

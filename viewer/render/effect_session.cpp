@@ -218,7 +218,11 @@ std::string EffectSession::unused_light_spectrum_warning(const scene::Light& lig
 
 void EffectSession::render(const scene::Scene& scene, const gl::RenderTarget& target, FrameTiming timing, bool clear_target) {
     if (loaded_->resources->uses_environment()) loaded_->resources->set_environment(&environment(scene.environment));
-    renderer_.render(scene, loaded_->techniques.at(technique_), values_for(scene), *loaded_->resources, target, timing, clear_target);
+    const effect::CompiledTechnique& technique = loaded_->techniques.at(technique_);
+    if (scene.light.spectrum.empty())  // the user's values as they are: no copy per frame
+        renderer_.render(scene, technique, values_, *loaded_->resources, target, timing, clear_target);
+    else
+        renderer_.render(scene, technique, values_for(scene), *loaded_->resources, target, timing, clear_target);
 }
 
 void EffectSession::watch() {

@@ -176,17 +176,24 @@ ComplexXyz fourier_lookup(const PackedTexture& table, int observer_row, int spec
     const Vec3 re0 = read(table, i, row), re1 = read(table, i + 1, row);
     const Vec3 im0 = read(table, i, row + 1), im1 = read(table, i + 1, row + 1);
     const Vec3 centre = read(table, 0, row + 2);
+    // The spread's second difference about sample j (the header), read once for the three channels.
+    Vec3 curve_re{}, curve_im{};
+    if (path_spread_nm > 0.0) {
+        const int j = std::max(i, 1);
+        const Vec3 a_re = read(table, j - 1, row), b_re = read(table, j, row), c_re = read(table, j + 1, row);
+        const Vec3 a_im = read(table, j - 1, row + 1), b_im = read(table, j, row + 1), c_im = read(table, j + 1, row + 1);
+        for (size_t c = 0; c < 3; ++c) {
+            curve_re[c] = c_re[c] - 2.0 * b_re[c] + a_re[c];
+            curve_im[c] = c_im[c] - 2.0 * b_im[c] + a_im[c];
+        }
+    }
     for (size_t c = 0; c < 3; ++c) {
         std::complex<double> envelope((1 - t) * re0[c] + t * re1[c], (1 - t) * im0[c] + t * im1[c]);
         const double phase_spread = kTwoPi * centre[c] * path_spread_nm;
         if (path_spread_nm > 0.0) {  // the first- and second-order terms of the spread (the header)
             const double tilt = kTwoPi * path_spread_nm * path_spread_nm * centre[c] / kFourierStepNm;
             const double bend = 0.5 * path_spread_nm * path_spread_nm * (1.0 - phase_spread * phase_spread) / (kFourierStepNm * kFourierStepNm);
-            const int j = std::max(i, 1);
-            const Vec3 a_re = read(table, j - 1, row), b_re = read(table, j, row), c_re = read(table, j + 1, row);
-            const Vec3 a_im = read(table, j - 1, row + 1), b_im = read(table, j, row + 1), c_im = read(table, j + 1, row + 1);
-            envelope += std::complex<double>(bend * (c_re[c] - 2.0 * b_re[c] + a_re[c]) - tilt * (im1[c] - im0[c]),
-                                             bend * (c_im[c] - 2.0 * b_im[c] + a_im[c]) + tilt * (re1[c] - re0[c]));
+            envelope += std::complex<double>(bend * curve_re[c] - tilt * (im1[c] - im0[c]), bend * curve_im[c] + tilt * (re1[c] - re0[c]));
         }
         const double cycles = path_difference_nm * centre[c];
         f[c] = envelope * std::polar(std::exp(-0.5 * phase_spread * phase_spread), kTwoPi * (cycles - std::floor(cycles)));
