@@ -8,15 +8,16 @@
 // (N tracks across, N·d along them), the phase across the tracks (orders where d (l + v)·g = mλ) and
 // along them (all orders lie where (l + v)·t = 0; the zero order is the mirror highlight), averaged
 // over each pixel's footprint. docs/diffraction.md.
-// Orders (the default): an energy-true grating lit by the scene's light as what it is, a point or a
-// sphere (a lamp, a ceiling panel, a window): each order m reflects the light like a mirror with its
-// own efficiency, turned by the grating equation (viewer/optics/grating_orders.hpp), so a sized
-// light shows a rainbow sector and the mirror order the light's own colour; the number of coherently
-// lit tracks sets each order's width, not its energy.
+// Orders (the default): an energy-true grating lit by the scene's light as what it is, a point, a
+// sphere (a lamp) or a flat disc or rectangle (a ceiling panel, a window; area_light.glsl): each
+// order m reflects the light like a mirror with its own efficiency, turned by the grating equation
+// (viewer/optics/grating_orders.hpp), so a sized light shows a rainbow sector and the mirror order
+// the light's own colour; the number of coherently lit tracks sets each order's width, not its energy.
 // CPU references: viewer/reference/cd_reference.cpp.
 #include "standard.glsl"
 #include "spectral.glsl"
 #include "environment_spectral.glsl"
+#include "area_light.glsl"
 
 uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
                             string UIHelp = "The light's spectrum (spectra/library.txt; 5 = D65); a scene light spectrum (--light-spectrum, Scene tab) overrides it";
@@ -228,7 +229,11 @@ GLSLShader OrdersFS {
     layout(location = 0) out vec4 color;
     void main() {
         Disc d = disc_at(fs_in.world_position, fs_in.normal, fs_in.tangent, fs_in.uv);
-        float edge = light_edge_chord(max(LightRadius, 0.0) / length(LightPosition - fs_in.world_position));
+        // A flat light (area_light.glsl) is looked up by the ray of each order; `edge` then bounds the
+        // chord from its centre to any of its points (|â − b̂| <= 2 |a − b| / |a|).
+        bool flat_lamp = flat_light();
+        float edge = flat_lamp ? min(2.0 * length(LightHalfSize) / length(LightPosition - fs_in.world_position), 2.0)
+                          : light_edge_chord(max(LightRadius, 0.0) / length(LightPosition - fs_in.world_position));
         vec3 view = vec3(dot(d.v, d.across), dot(d.v, d.along), dot(d.v, d.n));
         vec3 light = vec3(dot(d.l, d.across), dot(d.l, d.along), dot(d.l, d.n));
         // How far the view and the track direction turn across the pixel: each order's image is
@@ -242,7 +247,7 @@ GLSLShader OrdersFS {
             weights[m] = sinc_squared_weight(m);
             shares[m] = shares[m - 1] + weights[m];
         }
-        float diffuse = max(dot(d.n, d.l), 0.0) * Lamp;
+        float diffuse = (flat_lamp ? flat_light_factors(fs_in.world_position, d.n, d.v, 1.0, false).x : max(dot(d.n, d.l), 0.0)) * Lamp;
         float tracks = float(max(Tracks, 1)), reach = sqrt(max(1.0 - view.y * view.y, 0.0)), spacing = max(TrackSpacing, 1.0);
         bool surroundings = orders_see_environment();
         vec3 xyz = vec3(0.0);
@@ -264,10 +269,10 @@ GLSLShader OrdersFS {
                 float z2 = 1.0 - dot(tangential, tangential);
                 if (z2 <= 0.0) continue;
                 vec3 incidence = tangential.x * d.across + tangential.y * d.along + sqrt(z2) * d.n;
-                float chord = length(incidence - d.l);
                 float width = ratio / tracks + view_spread + float(abs(m)) * ratio * turn_spread;
                 float efficiency = m == 0 ? (others > 0.0 ? ZeroOrder : 1.0) : (1.0 - ZeroOrder) * weights[abs(m)] / others;
-                radiance += efficiency * sphere_light_radiance(chord, edge, width);
+                radiance += efficiency * (flat_lamp ? flat_light_radiance(fs_in.world_position, incidence, width)
+                                               : sphere_light_radiance(length(incidence - d.l), edge, width));
             }
             add_sample(xyz, ybar_sum, nm, Reflectance * radiance * Lamp, diffuse);
         }

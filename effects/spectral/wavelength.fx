@@ -9,6 +9,7 @@
 #include "spectral.glsl"
 #include "environment_spectral_lobes.glsl"
 #include "sphere_lamp.glsl"
+#include "area_light.glsl"
 
 // Indices into spectra/library.txt (`fxview spectra list`).
 uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
@@ -25,17 +26,22 @@ uniform float Power < string UIName = "Specular power"; float UIMin = 1; float U
 uniform bool Metal < string UIName = "Metal"; string UIGroup = "Lighting";
                      string UIHelp = "On: a metal, whose highlight takes the object's colour; off: a dielectric, whose highlight takes the light's colour"; > = false;
 
-uniform float LightRadius : LIGHTRADIUS;  // the scene's lamp as a sphere (`--light-radius`); 0: a point
+uniform float LightRadius : LIGHTRADIUS;  // the scene's lamp as a sphere (`--light-radius`); 0: a point; flat lights: area_light.glsl
 
 struct Geometry { float lambert; float phong; float blinn; };
 
 // The lamp's factors: cos θ and the lobes for a point, their means over the disc for a sphere lamp
-// (sphere_lamp.glsl). `lobes` false: the diffuse factor only (the lobes over a disc cost a loop).
+// (sphere_lamp.glsl), their integrals over a flat disc or rectangle (area_light.glsl). `lobes` false:
+// the diffuse factor only (the lobes over a sized lamp cost a loop).
 Geometry geometry(vec3 position, vec3 normal, bool lobes) {
     vec3 n = normalize(normal);
     vec3 l = normalize(LightPosition - position);
     vec3 v = normalize(CameraPosition - position);
     Geometry g = Geometry(0.0, 0.0, 0.0);
+    if (flat_light()) {
+        vec3 f = flat_light_factors(position, n, v, Power, lobes);
+        return Geometry(f.x, f.y, f.z);
+    }
     float sin_alpha = LightRadius > 0.0 ? min(LightRadius / length(LightPosition - position), 0.999) : 0.0;
     if (sin_alpha > 0.0) {
         g.lambert = sphere_lamp_lambert(dot(n, l), sin_alpha * sin_alpha);

@@ -153,6 +153,7 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
     result.tolerance = tolerance;
     const glm::dvec3 camera(math::camera_world_position(request.scene.camera.pose));
     const glm::dvec3 light(request.scene.light.world_position());
+    const scene::LightGeometry lamp = scene::light_geometry(request.scene.light);
 
     // The references are pure functions of the pixel's inputs: shade rows on every core, then judge
     // the pixels in order.
@@ -162,7 +163,7 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
         std::array<double, 4> truth{}, second_truth{};  // two independent estimates of the integral
     };
     const bool with_truth = ground_truth && ref->truth &&
-                            (!request.scene.environment.source.empty() || (ref->truth_with_sized_light && request.scene.light.radius > 0.0f) ||
+                            (!request.scene.environment.source.empty() || (ref->truth_with_sized_light && request.scene.light.has_size()) ||
                              (ref->truth_wanted && ref->truth_wanted(reference_context)));
     std::vector<Shaded> shaded(static_cast<size_t>(request.width) * static_cast<size_t>(request.height));
     const auto input_at = [&](int x, int y) {
@@ -175,7 +176,8 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
             glm::dvec4(footprints.pixel(x, y)[0], footprints.pixel(x, y)[1], footprints.pixel(x, y)[2], footprints.pixel(x, y)[3]);
         input.camera = camera;
         input.light = light;
-        input.light_radius = request.scene.light.radius;
+        input.lamp = lamp;
+        input.light_radius = lamp.shape == scene::LightShape::Sphere ? lamp.radius : 0.0;
         return input;
     };
     std::atomic<int> next_row{0};

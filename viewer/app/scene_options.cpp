@@ -28,11 +28,16 @@ void add_scene_options(CLI::App& command, SceneOptions& o) {
     command.add_option("--fov", o.fov, "Vertical field of view in degrees")->check(finite_range(1.0, 179.0));
     command.add_option("--light-position", o.light_position, "Light position X,Y,Z")->capture_default_str();
     command.add_option("--light-rotate", o.light_rotate, "Light rotation about the origin X,Y,Z in degrees");
-    auto* radius = command.add_option("--light-radius", o.light_radius, "Light as a sphere of this radius (world units; 0: a point)")
+    command.add_option("--light-shape", o.light_shape,
+                       "The light's shape: sphere (a point at radius 0), disc or rectangle (flat, facing the origin: a ceiling panel, a window)");
+    auto* radius = command.add_option("--light-radius", o.light_radius, "Radius of a sphere or disc light (world units; 0: a point)")
                        ->check(finite_range(0.0, 1e3));
-    command.add_option("--light-angle", o.light_angle, "Light as a sphere of this angular radius seen from the origin, degrees")
+    auto* size = command.add_option("--light-size", o.light_size, "Width and height W,H of a rectangle light (world units)");
+    command.add_option("--light-angle", o.light_angle,
+                       "The light's angular radius seen from the origin, degrees (a rectangle: a square of this half-angle)")
         ->check(finite_range(0.0, 60.0))
-        ->excludes(radius);
+        ->excludes(radius)
+        ->excludes(size);
     command.add_option("--light-spectrum", o.light_spectrum,
                        "The light's spectrum, a name of the spectral library (`fxview spectra list`): every spectral effect's light "
                        "spectrum follows it (parameters annotated SceneLight = \"spectrum\")");
@@ -50,6 +55,40 @@ void add_scene_options(CLI::App& command, SceneOptions& o) {
     command.add_flag("--gl-debug", o.gl_debug, "Print KHR_debug messages of the driver");
     add_effect_options(command, o.effect);
 }
+
+namespace {
+
+// The light's shape and size from the options, else the preset's: a sphere (a point at radius 0), a
+// disc of a radius, a rectangle of a size; --light-angle sizes any of them from the origin.
+void set_light_shape(scene::Light& light, const SceneOptions& o, const effect::PresetScene& preset) {
+    const std::string shape_name = o.light_shape.value_or(preset.light_shape.value_or("sphere"));
+    const std::optional<scene::LightShape> shape = scene::parse_light_shape(shape_name);
+    if (!shape) throw UsageError("--light-shape: '" + excerpt(shape_name) + "' is not sphere, disc or rectangle");
+    light.shape = *shape;
+    const float distance = glm::length(light.pose.position);
+    if (o.light_angle && *o.light_angle > 0 && distance == 0.0f)
+        throw UsageError("--light-angle: the light sits at the origin; give --light-radius or --light-size instead");
+    const double angle = glm::radians(o.light_angle.value_or(0.0f));
+    // A sphere subtends asin(R / D), a disc or square facing the origin atan(R / D).
+    const float reach = static_cast<float>(distance * (light.shape == scene::LightShape::Sphere ? std::sin(angle) : std::tan(angle)));
+    light.radius = o.light_angle ? reach : o.light_radius.value_or(preset.light_radius.value_or(0.0f));
+    if (o.light_size) {
+        light.size = parse_vec2("--light-size", *o.light_size);
+        if (!(light.size.x >= 0 && light.size.y >= 0 && light.size.x <= 1e3f && light.size.y <= 1e3f))
+            throw UsageError("--light-size: width and height from 0 to 1000");
+    } else if (o.light_angle) {
+        light.size = glm::vec2(2.0f * reach);
+    } else {
+        light.size = preset.light_size.value_or(glm::vec2(0.0f));
+    }
+    if (o.light_size && light.shape != scene::LightShape::Rectangle) throw UsageError("--light-size: only a rectangle light has a width and height (--light-shape rectangle)");
+    if (light.shape == scene::LightShape::Rectangle && o.light_radius) throw UsageError("--light-radius: a rectangle light is sized by --light-size W,H");
+    if (light.shape != scene::LightShape::Sphere && !light.has_size())
+        throw UsageError(std::string("--light-shape ") + scene::light_shape_name(light.shape) + ": give its size (" +
+                         (light.shape == scene::LightShape::Disc ? "--light-radius R" : "--light-size W,H") + " or --light-angle DEG)");
+}
+
+}  // namespace
 
 RenderRequest to_render_request(const SceneOptions& o) {
     RenderRequest request;
@@ -82,11 +121,8 @@ RenderRequest to_render_request(const SceneOptions& o) {
     scene.camera.fov_y_degrees = o.fov;
     scene.light.pose.position = parse_vec3("--light-position", o.light_position);
     scene.light.pose.rotation = math::rotation_from_euler_degrees(parse_vec3("--light-rotate", o.light_rotate));
-    if (o.light_angle) scene.light.radius = glm::length(scene.light.pose.position) * std::sin(glm::radians(*o.light_angle));
-    else scene.light.radius = o.light_radius.value_or(preset.light_radius.value_or(0.0f));
+    set_light_shape(scene.light, o, preset);
     scene.light.spectrum = o.light_spectrum.value_or(preset.light_spectrum.value_or(""));
-    if (o.light_angle && *o.light_angle > 0 && glm::length(scene.light.pose.position) == 0.0f)
-        throw UsageError("--light-angle: the light sits at the origin; give --light-radius instead");
     scene::SceneObject& object = scene.objects.front();
     object.mesh = o.mesh;
     object.pose.position = parse_vec3("--object-position", o.object_position);

@@ -12,6 +12,7 @@
 #include "core/text.hpp"
 #include "effect/bparam_file.hpp"
 #include "effect/parser.hpp"
+#include "scene/light_geometry.hpp"
 
 namespace fxview::effect {
 
@@ -132,6 +133,18 @@ PresetScene load_preset_scene(const std::string& path, const ResourceLimits& lim
             scene.exposure = static_cast<float>(number(-30, 30, "a number of EV stops, -30 to 30"));
         } else if (key == "light_radius") {
             scene.light_radius = static_cast<float>(number(0, 1e3, "a radius in world units, 0 to 1000"));
+        } else if (key == "light_shape") {
+            if (!value.is_string() || !scene::parse_light_shape(value.get<std::string>())) throw bad("\"sphere\", \"disc\" or \"rectangle\"");
+            scene.light_shape = value.get<std::string>();
+        } else if (key == "light_size") {
+            if (!value.is_array() || value.size() != 2) throw bad("[width, height] in world units, each 0 to 1000");
+            glm::vec2 size;
+            for (size_t i = 0; i < 2; ++i) {
+                const nlohmann::json& side = value[i];
+                if (!side.is_number() || !(side.get<double>() >= 0 && side.get<double>() <= 1e3)) throw bad("[width, height] in world units, each 0 to 1000");
+                size[static_cast<int>(i)] = static_cast<float>(side.get<double>());
+            }
+            scene.light_size = size;
         } else if (key == "light_spectrum") {
             if (!value.is_string() || value.get<std::string>().empty()) throw bad("a spectral-library name");
             scene.light_spectrum = value.get<std::string>();
@@ -144,7 +157,7 @@ PresetScene load_preset_scene(const std::string& path, const ResourceLimits& lim
             scene.samples = static_cast<int>(samples);
         } else {
             throw Error(where + "unknown scene setting \"" + excerpt(key) +
-                        "\" (environment, environment_rotate, environment_intensity, exposure, tone_map, samples, light_radius, light_spectrum)");
+                        "\" (environment, environment_rotate, environment_intensity, exposure, tone_map, samples, light_shape, light_radius, light_size, light_spectrum)");
         }
     }
     return scene;

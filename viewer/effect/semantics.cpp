@@ -12,7 +12,8 @@ const std::vector<std::string> kMatrixBases = {"WORLDVIEWPROJECTION", "VIEWPROJE
                                                "PROJECTION", "WORLD", "VIEW"};
 const std::vector<std::string> kOthers = {"CAMERAPOSITION", "LIGHTPOSITION", "LIGHTDIRECTION", "VIEWPORTPIXELSIZE",
                                           "TIME", "FRAME", "ENVIRONMENTROTATION", "ENVIRONMENTINTENSITY",
-                                          "VIEWLIGHTPOSITION", "LIGHTRADIUS"};
+                                          "VIEWLIGHTPOSITION", "LIGHTRADIUS", "LIGHTSHAPE",
+                                          "LIGHTHALFSIZE", "LIGHTFRAME", "LIGHTRADIANCE"};
 
 std::optional<glm::mat4> matrix_for(const std::string& semantic, const FrameContext& f) {
     for (const auto& base : kMatrixBases) {
@@ -30,6 +31,12 @@ std::optional<glm::mat4> matrix_for(const std::string& semantic, const FrameCont
         if (suffix == "INVERSETRANSPOSE") return glm::transpose(glm::inverse(m));
     }
     return std::nullopt;
+}
+
+// A mat3 (or the mat4 holding it), column-major.
+std::vector<float> mat3_value(const glm::mat3& m, int components) {
+    if (components == 9) return {m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1], m[2][2]};
+    return {m[0][0], m[0][1], m[0][2], 0.0f, m[1][0], m[1][1], m[1][2], 0.0f, m[2][0], m[2][1], m[2][2], 0.0f, 0.0f, 0.0f, 0.0f, 1.0f};
 }
 
 }  // namespace
@@ -52,6 +59,10 @@ std::vector<float> semantic_value(const std::string& semantic, const FrameContex
     if (semantic == "CAMERAPOSITION") return {f.camera_position.x, f.camera_position.y, f.camera_position.z, 1.0f};
     if (semantic == "LIGHTPOSITION") return {f.light_position.x, f.light_position.y, f.light_position.z, 1.0f};
     if (semantic == "LIGHTRADIUS") return {f.light_radius};
+    if (semantic == "LIGHTSHAPE") return {f.light_shape};
+    if (semantic == "LIGHTHALFSIZE") return {f.light_half_size.x, f.light_half_size.y};
+    if (semantic == "LIGHTRADIANCE") return {f.light_radiance};
+    if (semantic == "LIGHTFRAME") return mat3_value(f.light_frame, components);
     if (semantic == "VIEWLIGHTPOSITION") {  // Cg's glstate.light[0].position: OpenGL keeps it in eye space
         const glm::vec4 p = f.view * glm::vec4(f.light_position, 1.0f);
         return {p.x, p.y, p.z, p.w};
@@ -64,11 +75,7 @@ std::vector<float> semantic_value(const std::string& semantic, const FrameContex
     if (semantic == "VIEWPORTPIXELSIZE") return {f.viewport_size.x, f.viewport_size.y, 1.0f / f.viewport_size.x, 1.0f / f.viewport_size.y};
     if (semantic == "TIME") return {f.time};
     if (semantic == "ENVIRONMENTINTENSITY") return {f.environment_intensity};
-    if (semantic == "ENVIRONMENTROTATION") {  // mat3 (or the mat4 holding it), column-major
-        const glm::mat3& m = f.environment_rotation;
-        if (components == 9) return {m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1], m[2][2]};
-        return {m[0][0], m[0][1], m[0][2], 0.0f, m[1][0], m[1][1], m[1][2], 0.0f, m[2][0], m[2][1], m[2][2], 0.0f, 0.0f, 0.0f, 0.0f, 1.0f};
-    }
+    if (semantic == "ENVIRONMENTROTATION") return mat3_value(f.environment_rotation, components);
     if (semantic == "FRAME") return {static_cast<float>(f.frame)};
     return {};
 }

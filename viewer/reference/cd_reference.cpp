@@ -10,6 +10,7 @@
 
 #include "optics/grating.hpp"
 #include "optics/grating_orders.hpp"
+#include "reference/flat_lamp.hpp"
 #include "reference/environment_reference.hpp"
 #include "reference/spectral_integration.hpp"
 
@@ -124,11 +125,18 @@ double orders_radiance(const Disc& d, const ShadingInput& in, const ReferenceCon
         if (!l) continue;
         const double efficiency = efficiencies[static_cast<size_t>(m - range.first)];
         const glm::dvec3 incidence = l->x * d.across + l->y * d.along + l->z * d.n;
-        const double chord = glm::length(incidence - d.l) + offset;
         const double width = ratio / tracks + in.footprint.x + std::abs(m) * ratio * in.footprint.y;
-        radiance += efficiency * optics::sphere_light_radiance(chord, edge, width);
+        radiance += efficiency * (in.lamp.is_flat() ? scene::flat_light_radiance(in.lamp, in.position, glm::normalize(incidence), width)
+                                                    : optics::sphere_light_radiance(glm::length(incidence - d.l) + offset, edge, width));
     }
     return radiance * c.number("Lamp");
+}
+
+// The coating's irradiance factor (cos θ for a point): Orders sums a flat lamp over its points as
+// the GPU does (`truth`: integrates it by an independent rule); the other techniques see a point.
+double lamp_irradiance(const Disc& d, const ShadingInput& in, bool orders, bool truth = false) {
+    if (!orders || !in.lamp.is_flat()) return std::max(glm::dot(d.n, d.l), 0.0);
+    return truth ? flat_lamp_integral(in.lamp, in.position, d.n, d.v, 1.0).lambert : flat_lamp_factors(in.lamp, in.position, d.n, d.v, 1.0, false).lambert;
 }
 
 // The float error of the directions (normalisations, dot products, the chord's length: a few 1e-7;
@@ -232,7 +240,7 @@ Reference make(Diffraction diffraction, Surroundings surroundings = Surroundings
         const Disc d = disc(in);
         const bool lamp_scaled = surroundings == Surroundings::Diffracted;
         const std::optional<EnvironmentLookup> surrounding = lamp_scaled ? surroundings_of(c) : std::nullopt;
-        const double diffuse = std::max(glm::dot(d.n, d.l), 0.0) * (lamp_scaled ? c.number("Lamp") : 1.0);
+        const double diffuse = lamp_irradiance(d, in, lamp_scaled) * (lamp_scaled ? c.number("Lamp") : 1.0);
         spectral::Vec3 xyz = integrate(s, false, [&](int nm) {
             return spectral::packed_value(*s.spectra, light, nm) *
                    (diffraction(d, in, c, nm, true).intensity + weight * spectral::packed_value(*s.spectra, substrate, nm) * diffuse);
@@ -268,7 +276,7 @@ Reference make(Diffraction diffraction, Surroundings surroundings = Surroundings
             const SpectralSetup s = every_nm_setup(c);
             const int light = static_cast<int>(c.number("LightSpectrum")), substrate = static_cast<int>(c.number("SubstrateSpectrum"));
             const Disc d = disc(in);
-            const double diffuse = std::max(glm::dot(d.n, d.l), 0.0) * c.number("Lamp");
+            const double diffuse = lamp_irradiance(d, in, true, true) * c.number("Lamp");
             return to_rgba(integrate(s, true, [&](int nm) {
                 return spectral::packed_value(*s.spectra, light, nm) *
                            (diffraction(d, in, c, nm, true).intensity + c.number("SubstrateWeight") * spectral::packed_value(*s.spectra, substrate, nm) * diffuse) +

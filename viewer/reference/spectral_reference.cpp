@@ -16,6 +16,7 @@
 
 #include "reference/environment_reference.hpp"
 #include "reference/spectral_integration.hpp"
+#include "reference/flat_lamp.hpp"
 #include "reference/sphere_lamp.hpp"
 #include "reference/tangent_frame.hpp"
 #include "spectral/level_of_detail.hpp"
@@ -122,13 +123,16 @@ double seam_slack(const SpectralSetup& s, const Surroundings& env) {
 }
 
 // The lamp's factors cos θ and lobes: at its centre for a point; for a sphere lamp (`--light-radius`)
-// as the GPU averages them over its disc, or (`truth`) integrated over the disc by an independent rule.
+// as the GPU averages them over its disc, for a flat one (`--light-shape disc|rectangle`) as the GPU
+// sums them over its points; or (`truth`) integrated over the light by an independent rule.
 // `rounding`: the relative float error of the lobe's base (a cosine, ~2 ulps) that pow() raises to
 // the power; the slack evaluates the lobes with it.
 LampFactors lobes(const ShadingInput& in, double power, bool with_lobes, double rounding = 0.0, bool truth = false) {
     const glm::dvec3 n = glm::normalize(in.normal);
     const glm::dvec3 l = glm::normalize(in.light - in.position);
     const glm::dvec3 v = glm::normalize(in.camera - in.position);
+    if (in.lamp.is_flat())
+        return truth ? flat_lamp_integral(in.lamp, in.position, n, v, power) : flat_lamp_factors(in.lamp, in.position, n, v, power, with_lobes, rounding);
     if (in.light_radius > 0.0) {
         const double sin_alpha = std::min(in.light_radius / glm::length(in.light - in.position), 0.999);
         return truth ? sphere_lamp_integral(n, v, l, sin_alpha, power) : sphere_lamp_factors(n, v, l, sin_alpha, power, with_lobes, rounding);
@@ -210,8 +214,8 @@ Reference make(const LobeShader& shade, const Technique& t) {
             // A highlight's slack: what turning the normal by a few ulps changes (its flanks), plus what
             // the float rounding of the lobe's base, raised to the power, changes (its peak).
             const Shader exact = [&shade](const ShadingInput& i, const ReferenceContext& context) { return shade(i, context, 0.0); };
-            // A sphere lamp's count of points may step either way: both signs there.
-            const std::array<double, 4> at = exact(in, c), up = shade(in, c, 2.4e-7), down = in.light_radius > 0.0 ? shade(in, c, -2.4e-7) : at;
+            // A sized lamp's count of points may step either way: both signs there.
+            const std::array<double, 4> at = exact(in, c), up = shade(in, c, 2.4e-7), down = in.light_radius > 0.0 || in.lamp.is_flat() ? shade(in, c, -2.4e-7) : at;
             for (size_t i = 0; i < 3; ++i) change = std::max({change, std::abs(up[i] - at[i]), std::abs(down[i] - at[i])});
             change += normal_sensitivity(exact, in, c);
         }
@@ -222,7 +226,7 @@ Reference make(const LobeShader& shade, const Technique& t) {
         r.truth = [t](const ShadingInput& in, const ReferenceContext& c, unsigned seed) {
             return colour(every_nm_setup(c), true, lamp(in, c, t.lobe, 0.0, false, true), surroundings(in, c, t.lobe, &seed), t, c);
         };
-    r.truth_method = "the lamp and the environment at every nm: a sphere lamp over its disc (128 x 256 points), an environment's model over the sphere (an image: each direction's own uplifted spectrum; 2048 directions per lobe, the sun by quadrature)";
+    r.truth_method = "the lamp and the environment at every nm: a sphere lamp over its disc (128 x 256 points), a flat lamp over its surface (96 x 192 or 160 x 160 elements), an environment's model over the sphere (an image: each direction's own uplifted spectrum; 2048 directions per lobe, the sun by quadrature)";
     r.truth_with_sized_light = true;
     r.tolerance = 5e-5;
     r.why = "float32 on the GPU against double here: a sum of up to 471 products (rounding about 1e-6 of the "

@@ -79,7 +79,12 @@ void EffectRenderer::render(const scene::Scene& scene, const effect::CompiledTec
         math::perspective_matrix(scene.camera.fov_y_degrees, aspect, scene.camera.near_plane, scene.camera.far_plane);
     frame.camera_position = math::camera_world_position(scene.camera.pose);
     frame.light_position = scene.light.world_position();
-    frame.light_radius = scene.light.radius;
+    const scene::LightGeometry light = scene::light_geometry(scene.light);
+    frame.light_radius = static_cast<float>(light.equivalent_radius());
+    frame.light_shape = static_cast<float>(light.is_flat() ? static_cast<int>(light.shape) : 0);
+    frame.light_half_size = glm::vec2(light.half_size);
+    frame.light_frame = glm::mat3(glm::vec3(light.u), glm::vec3(light.v), glm::vec3(light.normal));
+    frame.light_radiance = static_cast<float>(light.radiance);
     frame.environment_rotation = scene.environment.world_to_environment();
     frame.environment_intensity = scene.environment.source.empty() ? 0.0f : scene.environment.intensity;
     frame.time = timing.time;

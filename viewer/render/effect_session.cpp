@@ -71,6 +71,7 @@ std::unique_ptr<EffectSession::Loaded> EffectSession::prepare(std::unique_ptr<ef
                 const std::string semantic = to_lower(uniform.parameter->semantic);
                 t.animated = t.animated || semantic == "time" || semantic == "frame";
                 t.sized_light = t.sized_light || semantic == "lightradius";
+                t.shaped_light = t.shaped_light || semantic == "lightshape";
                 if (!effect::is_sampler_type(uniform.parameter->type)) continue;
                 const std::string& texture_name = uniform.parameter->texture.empty() ? uniform.parameter->name : uniform.parameter->texture;
                 const effect::TextureResource* texture = loaded->effect->find_texture(texture_name);
@@ -174,9 +175,19 @@ std::string EffectSession::unused_environment_warning(const scene::Environment& 
 }
 
 std::string EffectSession::unused_light_radius_warning(const scene::Light& light) const {
-    if (light.radius <= 0.0f || traits(technique_).sized_light) return "";
-    return path_ + ": warning: technique '" + technique_ + "' treats the light as a point; its radius " + std::to_string(light.radius) +
-           " changes nothing here (cd.fx's Orders and wavelength.fx show a light's size)";
+    if (!light.has_size()) return "";
+    const TechniqueTraits& t = traits(technique_);
+    const std::string shape = scene::light_shape_name(light.shape);
+    const std::string readers = " (cd.fx's Orders and wavelength.fx show a light's size and shape)";
+    if (light.shape == scene::LightShape::Sphere && !t.sized_light)
+        return path_ + ": warning: technique '" + technique_ + "' treats the light as a point; its radius " + std::to_string(light.radius) +
+               " changes nothing here" + readers;
+    if (light.shape != scene::LightShape::Sphere && !t.shaped_light)
+        return path_ + ": warning: technique '" + technique_ + "' treats the " + shape + " light as " +
+               (t.sized_light ? "a sphere of radius " + std::to_string(scene::light_geometry(light).equivalent_radius()) + " (of equal area)"
+                              : std::string("a point at its centre")) +
+               readers;
+    return "";
 }
 
 std::vector<std::string> EffectSession::scene_warnings(const scene::Scene& scene) const {

@@ -52,7 +52,8 @@ public:
     // its spectral form (thin films, the CD's orders, wavelength.fx) are warned where an image's colours
     // are more varied than its three spectra hold (known once the environment is loaded).
     std::string unused_environment_warning(const scene::Environment& environment) const;
-    // The same for a sphere light's radius that the selected technique does not read (LIGHTRADIUS).
+    // The same for a sized light the selected technique treats as a point (LIGHTRADIUS unread) or, a flat
+    // one, as a sphere or a point (LIGHTSHAPE unread).
     std::string unused_light_radius_warning(const scene::Light& light) const;
     // A scene light spectrum (scene::Light::spectrum) that no parameter of the effect follows.
     std::string unused_light_spectrum_warning(const scene::Light& light) const;
@@ -70,6 +71,7 @@ public:
         bool animated = false;             // a TIME or FRAME semantic is read: the picture changes with time alone
         bool renders_to_textures = false;  // later passes may read neighbouring pixels: no strip-by-strip drawing
         bool sized_light = false;          // the LIGHTRADIUS semantic is read: the light's size shows
+        bool shaped_light = false;         // LIGHTSHAPE is read: a flat light shows as a disc or rectangle
         bool reads_environment = false;      // it samples an "environment:..." texture
         bool reads_rgb_environment = false;  // ... one that is not the spectral form's
     };

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "math/transform.hpp"
+#include "scene/light_geometry.hpp"
 
 namespace fxview::scene {
 
@@ -14,21 +15,26 @@ struct Camera {
     float far_plane = 100.0f;
 };
 
-// A light: a point, or a sphere of `radius` (a lamp, a ceiling panel or a window seen as a disc of
-// angular radius asin(radius / distance)); `pose.rotation` turns its position about the origin (the
-// light is orbited). A sphere light gives the irradiance of the point light at its centre, so its
-// radius changes reflections (highlights, diffraction orders), not the diffuse shading; effects read
-// it through the LIGHTRADIUS semantic.
+// A light: a point, a sphere of `radius` (seen as a disc of angular radius asin(radius / distance)),
+// or a flat disc or rectangle facing the origin (a ceiling panel, a window; scene/light_geometry.hpp);
+// `pose.rotation` turns its position about the origin (the light is orbited). A sphere gives the
+// irradiance of the point light at its centre, so its radius changes reflections (highlights,
+// diffraction orders), not the diffuse shading; a flat light emits a uniform radiance that gives the
+// point light's irradiance at the origin. Effects read them through the LIGHTRADIUS and LIGHTSHAPE semantics.
 struct Light {
     math::Pose pose{glm::vec3(2.0f, 2.0f, 3.0f), glm::quat(1.0f, 0.0f, 0.0f, 0.0f)};
     glm::vec3 color{1.0f};
     float intensity = 1.0f;
-    float radius = 0.0f;  // world units; 0: a point light
+    LightShape shape = LightShape::Sphere;
+    float radius = 0.0f;       // world units, a sphere's or a disc's; 0: a point light
+    glm::vec2 size{1.0f};      // a rectangle's width and height, world units
     // A spectral-library name: the light's spectrum in every spectral effect (each parameter annotated
     // SceneLight = "spectrum" follows it); empty: each effect's own choice.
     std::string spectrum;
 
     glm::vec3 world_position() const { return glm::mat3_cast(pose.rotation) * pose.position; }
+    // Whether it is more than a point.
+    bool has_size() const { return shape == LightShape::Rectangle ? size.x > 0 && size.y > 0 : radius > 0; }
 };
 
 struct SceneObject {

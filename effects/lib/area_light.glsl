@@ -1,0 +1,106 @@
+// The scene light as a flat disc or rectangle (`--light-shape`): a one-sided Lambertian emitter of
+// uniform radiance that faces the origin and gives there the point light's irradiance. GPU twin of
+// viewer/scene/light_geometry.cpp: the factors that replace the point light's cos θ, (r·v)^p and
+// (n·h)^p (integrals over the light's solid angle), and its radiance along one direction for the
+// CD's diffraction orders. Needs LightPosition (standard.glsl).
+#pragma once
+
+uniform float LightShape : LIGHTSHAPE;       // 0 a sphere or a point, 1 a disc, 2 a rectangle
+uniform vec2 LightHalfSize : LIGHTHALFSIZE;  // half extents along the light's u and v
+uniform mat3 LightFrame : LIGHTFRAME;        // columns u, v and the emitting side's normal
+uniform float LightRadiance : LIGHTRADIANCE; // per unit intensity; 0: not a flat light
+
+bool flat_light() { return LightShape > 0.5 && LightRadiance > 0.0; }
+bool flat_light_is_disc() { return LightShape < 1.5; }
+float flat_light_area() { return flat_light_is_disc() ? 3.14159265358979323846 * LightHalfSize.x * LightHalfSize.x : 4.0 * LightHalfSize.x * LightHalfSize.y; }
+
+// The quadrature's point count: a Fibonacci number at least `wanted` and `fewest`, at most 233; its
+// predecessor is the rectangle's lattice step.
+ivec2 flat_light_count(float wanted) {
+    const int fibonacci[6] = int[6](21, 34, 55, 89, 144, 233);
+    for (int i = 1; i < 6; ++i)
+        if (float(fibonacci[i]) >= wanted) return ivec2(fibonacci[i], fibonacci[i - 1]);
+    return ivec2(233, 144);
+}
+
+// Point j of `count` of equal area: a disc's sunflower spiral, a rectangle's Fibonacci lattice (exact in integers).
+vec3 flat_light_point(int j, ivec2 count) {
+    vec2 q;
+    if (flat_light_is_disc()) {
+        float r = sqrt((float(j) + 0.5) / float(count.x)), phi = 3.14159265358979323846 * (3.0 - sqrt(5.0)) * float(j);
+        q = LightHalfSize.x * r * vec2(cos(phi), sin(phi));
+    } else {
+        q = LightHalfSize * (2.0 * vec2((float(j) + 0.5) / float(count.x), (float((j * count.y) % count.x) + 0.5) / float(count.x)) - 1.0);
+    }
+    return LightPosition + q.x * LightFrame[0] + q.y * LightFrame[1];
+}
+
+// ∫ L max(cos θ, 0) dω, ∫ L (r·v)^p dω and ∫ L (n·h)^p dω over the light (those of a point light are
+// cos θ and the two lobes), by the light's points: 4 Ω p of them (Ω its solid angle) so that
+// neighbours lie within the lobe's width, 144 at least where the horizon crosses it, 34 else.
+vec3 flat_light_factors(vec3 position, vec3 n, vec3 v, float power, bool lobes) {
+    vec3 to_centre = LightPosition - position;
+    float distance2 = max(dot(to_centre, to_centre), 1e-12);
+    vec3 l = to_centre * inversesqrt(distance2);
+    float area = flat_light_area(), solid = min(area * max(-dot(l, LightFrame[2]), 0.0) / distance2, 6.2831853);
+    float cos_theta = dot(n, l);
+    ivec2 count = flat_light_count(max(ceil(4.0 * solid * (lobes ? power : 1.0)), cos_theta * cos_theta < solid / 3.14159265 ? 144.0 : 34.0));
+    vec3 sum = vec3(0.0);
+    for (int j = 0; j < count.x; ++j) {
+        vec3 d = flat_light_point(j, count) - position;
+        float r2 = dot(d, d);
+        vec3 dir = d * inversesqrt(r2);
+        float emitted = -dot(dir, LightFrame[2]), cosine = dot(n, dir);
+        if (emitted <= 0.0 || cosine <= 0.0) continue;
+        float w = emitted / r2;
+        sum.x += w * cosine;
+        if (lobes) sum.yz += w * vec2(pow(max(dot(reflect(-dir, n), v), 0.0), power), pow(max(dot(n, normalize(dir + v)), 0.0), power));
+    }
+    return sum * (LightRadiance * area / float(count.x));
+}
+
+// ∫ over the outline offset inwards by 0..x and outwards by 0..y (layer-cake form of the edge ramp's integral).
+float flat_light_offset_integral(vec2 h, float x, float y) {
+    float product = h.x * h.y, sum = h.x + h.y, pi = 3.14159265358979323846;
+    float inner = product * x - sum * x * x / 2.0 + x * x * x / 3.0;
+    if (flat_light_is_disc()) return pi * (inner + product * y + sum * y * y / 2.0 + y * y * y / 3.0);
+    return 4.0 * inner + 4.0 * product * y + 2.0 * sum * y * y + pi * y * y * y / 3.0;
+}
+
+// The light's radiance along unit `direction` from `position`, its image blurred by an angle `width`:
+// the outline ramped linearly over `width`, divided by the light the ramp adds.
+float flat_light_radiance(vec3 position, vec3 direction, float width) {
+    vec3 n = LightFrame[2];
+    float towards = -dot(direction, n), height = dot(position - LightPosition, n);
+    if (towards <= 0.0 || height <= 0.0) return 0.0;
+    float t = height / towards;
+    vec3 hit = position + t * direction - LightPosition;
+    vec2 q = vec2(dot(hit, LightFrame[0]), dot(hit, LightFrame[1]));
+    float inside;
+    vec2 across = vec2(1.0, 0.0);
+    if (flat_light_is_disc()) {
+        float r = length(q);
+        inside = LightHalfSize.x - r;
+        if (r > 0.0) across = q / r;
+    } else {
+        vec2 beyond = abs(q) - LightHalfSize, s = vec2(q.x < 0.0 ? -1.0 : 1.0, q.y < 0.0 ? -1.0 : 1.0);
+        if (beyond.x > 0.0 && beyond.y > 0.0) { inside = -length(beyond); across = normalize(beyond) * s; }
+        else if (beyond.x > beyond.y) { inside = -beyond.x; across = vec2(s.x, 0.0); }
+        else { inside = -beyond.y; across = vec2(0.0, s.y); }
+    }
+    // The angle to the outline's nearest point, as the chord between unit directions (the in-plane
+    // distance over t would vanish for rays that graze the light's plane).
+    vec2 edge = q + inside * across;
+    float angle = sign(inside) * length(direction - normalize(LightPosition + edge.x * LightFrame[0] + edge.y * LightFrame[1] - position));
+    if (width <= 0.0) return angle >= 0.0 ? LightRadiance : 0.0;
+    float ramp = clamp(0.5 + angle / width, 0.0, 1.0);
+    if (ramp <= 0.0) return 0.0;
+    vec3 to_centre = LightPosition - position;
+    float distance = length(to_centre);
+    vec3 l = to_centre / distance;
+    vec2 h = flat_light_is_disc() ? vec2(LightHalfSize.x, LightHalfSize.x * max(-dot(l, n), 0.0)) / distance
+                                  : LightHalfSize * sqrt(max(vec2(1.0) - vec2(dot(l, LightFrame[0]), dot(l, LightFrame[1])) * vec2(dot(l, LightFrame[0]), dot(l, LightFrame[1])), 0.0)) / distance;
+    float sharp = flat_light_is_disc() ? 3.14159265358979323846 * h.x * h.y : 4.0 * h.x * h.y;
+    float ramped = flat_light_offset_integral(h, min(0.5 * width, min(h.x, h.y)), 0.5 * width) / width;
+    return ramped > 0.0 ? LightRadiance * ramp * sharp / ramped : 0.0;
+}
