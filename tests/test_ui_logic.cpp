@@ -312,6 +312,32 @@ TEST_CASE("the light's marker: projected when in view, on the view's edge pointi
     CHECK(behind.at.y == doctest::Approx(580.0f));
 }
 
+TEST_CASE("the light's outline: a flat light facing the camera projects to its own shape, a point to none") {
+    const fxview::scene::Camera camera;  // at distance 3 on +Z, looking at the origin
+    const glm::vec2 view(800.0f, 600.0f);
+    fxview::scene::Light light;
+    light.pose.position = glm::vec3(0.0f, 0.0f, -5.0f);  // beyond the origin, facing it and so the camera
+    light.shape = fxview::scene::LightShape::Disc;
+    light.radius = 1.0f;
+    const auto disc = fxview::ui::light_outline(camera, light, view);
+    REQUIRE(disc.points.size() == 48);
+    CHECK(disc.flat);
+    // 8 units from the camera, fov 45°: a radius of 1 spans 300 / tan(22.5°) / 8 = 90.5 px, all round.
+    for (const glm::vec2 p : disc.points) CHECK(glm::length(p - glm::vec2(400.0f, 300.0f)) == doctest::Approx(90.53).epsilon(1e-3));
+    light.shape = fxview::scene::LightShape::Rectangle;
+    light.size = glm::vec2(2.0f, 1.0f);
+    const auto window = fxview::ui::light_outline(camera, light, view);
+    REQUIRE(window.points.size() == 4);
+    CHECK(std::abs(window.points[0].x - window.points[1].x) == doctest::Approx(2 * 90.53).epsilon(1e-3));  // width along the horizontal
+    CHECK(std::abs(window.points[1].y - window.points[2].y) == doctest::Approx(90.53).epsilon(1e-3));
+    light.shape = fxview::scene::LightShape::Sphere;
+    light.radius = 0.0f;
+    CHECK(fxview::ui::light_outline(camera, light, view).points.empty());  // a point has no outline
+    light.radius = 0.5f;
+    light.pose.position = glm::vec3(0.0f, 0.0f, 10.0f);                  // behind the camera
+    CHECK(fxview::ui::light_outline(camera, light, view).points.empty());
+}
+
 TEST_CASE("the panel's width: the user's while the window has room, a share of a shrunk window, the user's again after") {
     ui::PanelWidth panel;
     panel.prefer(460);

@@ -471,6 +471,26 @@ TEST_CASE("the light's spectrum set by script (as the Scene tab) gives render --
     CHECK(differs);  // "none" gives the effect its own D65 back
 }
 
+TEST_CASE("the light's shape set by script (as the Scene tab) gives render --light-shape's picture; a bad size is refused") {
+    const std::string effect = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/wavelength.fx";
+    const std::string shot = temp_path("shape-view.png"), rendered = temp_path("shape-render.png"), point = temp_path("shape-point.png");
+    const std::string script = temp_path("shape-script.txt");
+    std::ofstream(script) << "light-shape rectangle 3 1\nrender-screenshot " << shot << "\nlight-shape disc -1\nlight-shape sphere 0\nrender-screenshot " << point << "\n";
+    const Result r = run("view " + effect + " -t Phong --size 48x48 --script " + script + " --frames 2");
+    CAPTURE(r.err);
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("light-shape: sizes from 0 to 1000") != std::string::npos);
+    REQUIRE(run("render " + effect + " -t Phong --light-shape rectangle --light-size 3,1 --size 48x48 --out " + rendered).exit_code == 0);
+    const auto view = load_png(shot), render = load_png(rendered), back = load_png(point);
+    bool differs = false;
+    for (const auto& [x, y] : {std::pair{24, 24}, std::pair{16, 20}, std::pair{30, 30}})
+        for (int c = 0; c < 3; ++c) {
+            CHECK(std::abs(texel(view, x, y)[c] - texel(render, x, y)[c]) <= 1.0f / 255.0f + 1e-6f);
+            differs = differs || std::abs(texel(back, x, y)[c] - texel(view, x, y)[c]) > 2.0f / 255.0f;
+        }
+    CHECK(differs);  // a point light again: another picture
+}
+
 TEST_CASE("a large UI scale keeps the tabs' names whole; a shrunk window gets a share of the panel, its width comes back") {
     const std::string script = temp_path("panel-script.txt");
     std::ofstream(script) << "ui-state\nwindow 640 480\nui-state\nwindow 1280 800\nui-state\n";

@@ -60,25 +60,49 @@ vec3 flat_light_factors(vec3 position, vec3 n, vec3 v, float power, bool lobes) 
 }
 
 // ∫ over the outline offset inwards by 0..x and outwards by 0..y (layer-cake form of the edge ramp's integral).
-float flat_light_offset_integral(vec2 h, float x, float y) {
+float flat_light_offset_integral(vec2 h, float x, float y, bool disc) {
     float product = h.x * h.y, sum = h.x + h.y, pi = 3.14159265358979323846;
     float inner = product * x - sum * x * x / 2.0 + x * x * x / 3.0;
-    if (flat_light_is_disc()) return pi * (inner + product * y + sum * y * y / 2.0 + y * y * y / 3.0);
+    if (disc) return pi * (inner + product * y + sum * y * y / 2.0 + y * y * y / 3.0);
     return 4.0 * inner + 4.0 * product * y + 2.0 * sum * y * y + pi * y * y * y / 3.0;
 }
 
-// The light's radiance along unit `direction` from `position`, its image blurred by an angle `width`:
-// the outline ramped linearly over `width`, divided by the light the ramp adds.
-float flat_light_radiance(vec3 position, vec3 direction, float width) {
-    vec3 n = LightFrame[2];
-    float towards = -dot(direction, n), height = dot(position - LightPosition, n);
-    if (towards <= 0.0 || height <= 0.0) return 0.0;
-    float t = height / towards;
-    vec3 hit = position + t * direction - LightPosition;
-    vec2 q = vec2(dot(hit, LightFrame[0]), dot(hit, LightFrame[1]));
+// The flat light seen from one surface point: what every lookup from there shares.
+struct FlatLightView {
+    vec3 position;
+    float height;       // above the light's plane, on its emitting side (<= 0: behind it)
+    vec2 below;         // the point's in-plane coordinates
+    vec2 half_angles;   // the light's angular half extents seen from there (a disc: its ellipse's)
+    float sharp;        // the light's angular area: π h1 h2 or 4 h1 h2
+};
+
+FlatLightView flat_light_view(vec3 position) {
+    FlatLightView f;
+    vec3 from_centre = position - LightPosition, n = LightFrame[2];
+    f.position = position;
+    f.height = dot(from_centre, n);
+    f.below = vec2(dot(from_centre, LightFrame[0]), dot(from_centre, LightFrame[1]));
+    float distance = length(from_centre);
+    vec3 l = -from_centre / distance;
+    vec2 along = vec2(dot(l, LightFrame[0]), dot(l, LightFrame[1]));
+    f.half_angles = flat_light_is_disc() ? vec2(LightHalfSize.x, LightHalfSize.x * max(-dot(l, n), 0.0)) / distance
+                                         : LightHalfSize * sqrt(max(vec2(1.0) - along * along, 0.0)) / distance;
+    f.sharp = (flat_light_is_disc() ? 3.14159265358979323846 : 4.0) * f.half_angles.x * f.half_angles.y;
+    return f;
+}
+
+// The light's radiance along unit `direction` from the view's point, its image blurred by an angle
+// `width`: the outline ramped linearly over `width`, divided by the light the ramp adds. `disc`:
+// flat_light_is_disc(), passed as a constant where a loop calls this (llvmpipe runs both sides of a
+// branch in a loop).
+float flat_light_radiance(FlatLightView f, vec3 direction, float width, bool disc) {
+    float towards = -dot(direction, LightFrame[2]);
+    if (towards <= 0.0 || f.height <= 0.0) return 0.0;
+    float t = f.height / towards;
+    vec2 q = f.below + t * vec2(dot(direction, LightFrame[0]), dot(direction, LightFrame[1]));
     float inside;
     vec2 across = vec2(1.0, 0.0);
-    if (flat_light_is_disc()) {
+    if (disc) {
         float r = length(q);
         inside = LightHalfSize.x - r;
         if (r > 0.0) across = q / r;
@@ -90,17 +114,10 @@ float flat_light_radiance(vec3 position, vec3 direction, float width) {
     }
     // The angle to the outline's nearest point, as the chord between unit directions (the in-plane
     // distance over t would vanish for rays that graze the light's plane).
-    vec2 edge = q + inside * across;
-    float angle = sign(inside) * length(direction - normalize(LightPosition + edge.x * LightFrame[0] + edge.y * LightFrame[1] - position));
+    vec2 edge = q + inside * across - f.below;
+    float angle = sign(inside) * length(direction - normalize(edge.x * LightFrame[0] + edge.y * LightFrame[1] - f.height * LightFrame[2]));
     if (width <= 0.0) return angle >= 0.0 ? LightRadiance : 0.0;
     float ramp = clamp(0.5 + angle / width, 0.0, 1.0);
-    if (ramp <= 0.0) return 0.0;
-    vec3 to_centre = LightPosition - position;
-    float distance = length(to_centre);
-    vec3 l = to_centre / distance;
-    vec2 h = flat_light_is_disc() ? vec2(LightHalfSize.x, LightHalfSize.x * max(-dot(l, n), 0.0)) / distance
-                                  : LightHalfSize * sqrt(max(vec2(1.0) - vec2(dot(l, LightFrame[0]), dot(l, LightFrame[1])) * vec2(dot(l, LightFrame[0]), dot(l, LightFrame[1])), 0.0)) / distance;
-    float sharp = flat_light_is_disc() ? 3.14159265358979323846 * h.x * h.y : 4.0 * h.x * h.y;
-    float ramped = flat_light_offset_integral(h, min(0.5 * width, min(h.x, h.y)), 0.5 * width) / width;
-    return ramped > 0.0 ? LightRadiance * ramp * sharp / ramped : 0.0;
+    float ramped = flat_light_offset_integral(f.half_angles, min(0.5 * width, min(f.half_angles.x, f.half_angles.y)), 0.5 * width, disc) / width;
+    return ramped > 0.0 ? LightRadiance * ramp * f.sharp / ramped : 0.0;
 }

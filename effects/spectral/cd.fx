@@ -223,6 +223,37 @@ float sphere_light_radiance(float chord, float edge, float width) {
     return moment > 0.0 ? profile / (2.0 * PI * moment) : 0.0;
 }
 
+// The scene's lamp through the orders at every sampled nm (into xyz and ybar_sum). `flat_lamp` and
+// `disc` are constants at each call, so that each call compiles to its own light's code: llvmpipe
+// runs both sides of a branch inside a loop.
+void lamp_orders(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, vec3 view, vec3 light, float edge, float view_spread, float turn_spread,
+                 float weights[kMaxOrder + 1], float shares[kMaxOrder + 1], float diffuse, inout vec3 xyz, inout float ybar_sum) {
+    float tracks = float(max(Tracks, 1)), reach = sqrt(max(1.0 - view.y * view.y, 0.0)), spacing = max(TrackSpacing, 1.0);
+    for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+        float ratio = float(nm) / spacing, orders_per_unit = spacing / float(nm);  // λ / d and d / λ
+        // The propagating orders: |m λ/d - v_x|² + v_y² < 1.
+        int first = clamp(int(floor((view.x - reach) * orders_per_unit)) + 1, -kMaxOrder, 0);
+        int last = clamp(int(ceil((view.x + reach) * orders_per_unit)) - 1, 0, kMaxOrder);
+        float others = shares[-first] + shares[last];
+        float widest = ratio / tracks + view_spread + float(max(-first, last)) * ratio * turn_spread;
+        // Only orders whose direction can fall on the light: |l_x - c_x| <= |l - c|.
+        float near = edge + 0.5 * widest;
+        int from = max(first, int(ceil((view.x + light.x - near) * orders_per_unit)));
+        int to = min(last, int(floor((view.x + light.x + near) * orders_per_unit)));
+        float radiance = 0.0;
+        for (int m = from; m <= to && view.z > 0.0; ++m) {
+            vec2 tangential = vec2(float(m) * ratio - view.x, -view.y);
+            float z2 = 1.0 - dot(tangential, tangential);
+            if (z2 <= 0.0) continue;
+            vec3 incidence = tangential.x * d.across + tangential.y * d.along + sqrt(z2) * d.n;
+            float width = ratio / tracks + view_spread + float(abs(m)) * ratio * turn_spread;
+            float efficiency = m == 0 ? (others > 0.0 ? ZeroOrder : 1.0) : (1.0 - ZeroOrder) * weights[abs(m)] / others;
+            radiance += efficiency * (flat_lamp ? flat_light_radiance(flat_view, incidence, width, disc) : sphere_light_radiance(length(incidence - d.l), edge, width));
+        }
+        add_sample(xyz, ybar_sum, nm, Reflectance * radiance * Lamp, diffuse);
+    }
+}
+
 GLSLShader OrdersFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
@@ -230,10 +261,12 @@ GLSLShader OrdersFS {
     void main() {
         Disc d = disc_at(fs_in.world_position, fs_in.normal, fs_in.tangent, fs_in.uv);
         // A flat light (area_light.glsl) is looked up by the ray of each order; `edge` then bounds the
-        // chord from its centre to any of its points (|â − b̂| <= 2 |a − b| / |a|).
+        // chord from its centre to any of its points: those within its half diagonal ρ of the centre
+        // lie within asin(ρ / distance) of it, as a sphere of radius ρ.
         bool flat_lamp = flat_light();
-        float edge = flat_lamp ? min(2.0 * length(LightHalfSize) / length(LightPosition - fs_in.world_position), 2.0)
-                          : light_edge_chord(max(LightRadius, 0.0) / length(LightPosition - fs_in.world_position));
+        float reach_of_light = flat_lamp ? (flat_light_is_disc() ? LightHalfSize.x : length(LightHalfSize)) : max(LightRadius, 0.0);
+        float light_distance = length(LightPosition - fs_in.world_position);
+        float edge = flat_lamp && reach_of_light >= light_distance ? 2.0 : light_edge_chord(reach_of_light / light_distance);
         vec3 view = vec3(dot(d.v, d.across), dot(d.v, d.along), dot(d.v, d.n));
         vec3 light = vec3(dot(d.l, d.across), dot(d.l, d.along), dot(d.l, d.n));
         // How far the view and the track direction turn across the pixel: each order's image is
@@ -247,35 +280,16 @@ GLSLShader OrdersFS {
             weights[m] = sinc_squared_weight(m);
             shares[m] = shares[m - 1] + weights[m];
         }
-        float diffuse = (flat_lamp ? flat_light_factors(fs_in.world_position, d.n, d.v, 1.0, false).x : max(dot(d.n, d.l), 0.0)) * Lamp;
-        float tracks = float(max(Tracks, 1)), reach = sqrt(max(1.0 - view.y * view.y, 0.0)), spacing = max(TrackSpacing, 1.0);
+        float diffuse = max(dot(d.n, d.l), 0.0) * Lamp;
+        if (flat_lamp) diffuse = flat_light_factors(fs_in.world_position, d.n, d.v, 1.0, false).x * Lamp;
         bool surroundings = orders_see_environment();
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
-        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
-            float ratio = float(nm) / spacing, orders_per_unit = spacing / float(nm);  // λ / d and d / λ
-            // The propagating orders: |m λ/d - v_x|² + v_y² < 1.
-            int first = clamp(int(floor((view.x - reach) * orders_per_unit)) + 1, -kMaxOrder, 0);
-            int last = clamp(int(ceil((view.x + reach) * orders_per_unit)) - 1, 0, kMaxOrder);
-            float others = shares[-first] + shares[last];
-            float widest = ratio / tracks + view_spread + float(max(-first, last)) * ratio * turn_spread;
-            // Only orders whose direction can fall on the light: |l_x - c_x| <= |l - c|.
-            float near = edge + 0.5 * widest;
-            int from = max(first, int(ceil((view.x + light.x - near) * orders_per_unit)));
-            int to = min(last, int(floor((view.x + light.x + near) * orders_per_unit)));
-            float radiance = 0.0;
-            for (int m = from; m <= to && view.z > 0.0; ++m) {
-                vec2 tangential = vec2(float(m) * ratio - view.x, -view.y);
-                float z2 = 1.0 - dot(tangential, tangential);
-                if (z2 <= 0.0) continue;
-                vec3 incidence = tangential.x * d.across + tangential.y * d.along + sqrt(z2) * d.n;
-                float width = ratio / tracks + view_spread + float(abs(m)) * ratio * turn_spread;
-                float efficiency = m == 0 ? (others > 0.0 ? ZeroOrder : 1.0) : (1.0 - ZeroOrder) * weights[abs(m)] / others;
-                radiance += efficiency * (flat_lamp ? flat_light_radiance(fs_in.world_position, incidence, width)
-                                               : sphere_light_radiance(length(incidence - d.l), edge, width));
-            }
-            add_sample(xyz, ybar_sum, nm, Reflectance * radiance * Lamp, diffuse);
-        }
+        FlatLightView flat_view = flat_light_view(fs_in.world_position);
+        if (flat_lamp && flat_light_is_disc()) lamp_orders(true, true, d, flat_view, view, light, edge, view_spread, turn_spread, weights, shares, diffuse, xyz, ybar_sum);
+        else if (flat_lamp) lamp_orders(true, false, d, flat_view, view, light, edge, view_spread, turn_spread, weights, shares, diffuse, xyz, ybar_sum);
+        else lamp_orders(false, false, d, flat_view, view, light, edge, view_spread, turn_spread, weights, shares, diffuse, xyz, ybar_sum);
+        float reach = sqrt(max(1.0 - view.y * view.y, 0.0)), spacing = max(TrackSpacing, 1.0);
         // The surroundings: every propagating order mirrors the environment's spectral radiance
         // L = Σ_k w_k S_k from the direction the grating equation picks for it. The direction moves
         // slowly with λ, so it is found once per band of EnvironmentBand nm, at the band's mean

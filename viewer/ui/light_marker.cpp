@@ -32,4 +32,31 @@ LightMarker light_marker(const scene::Camera& camera, glm::vec3 light_position, 
     return marker;
 }
 
+LightOutline light_outline(const scene::Camera& camera, const scene::Light& light, glm::vec2 view_size) {
+    LightOutline outline;
+    if (!light.has_size()) return outline;
+    const glm::mat4 to_clip = math::perspective_matrix(camera.fov_y_degrees, view_size.x / view_size.y, camera.near_plane, camera.far_plane) *
+                              math::view_matrix(camera.pose);
+    bool behind = false;
+    const auto project = [&](const glm::dvec3& p) {
+        const glm::vec4 clip = to_clip * glm::vec4(glm::vec3(p), 1.0f);
+        if (clip.w <= 1e-6f) behind = true;
+        const glm::vec2 ndc = glm::vec2(clip) / std::max(clip.w, 1e-6f);
+        return glm::vec2((ndc.x * 0.5f + 0.5f) * view_size.x, (0.5f - ndc.y * 0.5f) * view_size.y);
+    };
+    scene::LightGeometry g = scene::light_geometry(light);
+    outline.flat = g.shape != scene::LightShape::Sphere;
+    if (!outline.flat) {  // the silhouette: a circle across the direction from the camera
+        const glm::dvec3 view = glm::normalize(g.centre - glm::dvec3(math::camera_world_position(camera.pose)));
+        const glm::dvec3 side = glm::cross(view, glm::dvec3(0, 1, 0));
+        g.u = glm::length(side) > 1e-9 ? glm::normalize(side) : glm::dvec3(1, 0, 0);
+        g.v = glm::cross(g.u, view);
+    }
+    for (const glm::dvec3& p : g.outline(48)) outline.points.push_back(project(p));
+    outline.centre = project(g.centre);
+    outline.facing = project(g.centre + g.normal * std::max(0.6 * std::max(g.half_size.x, g.half_size.y), 0.2));
+    if (behind) outline = LightOutline{};
+    return outline;
+}
+
 }  // namespace fxview::ui

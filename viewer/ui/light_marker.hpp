@@ -2,6 +2,8 @@
 // the view, else a point on the view's edge in the light's direction (the default light sits in the
 // camera's plane, so it never projects). No ImGui: scene_panel.cpp draws it, tests check it.
 #pragma once
+#include <vector>
+
 #include <glm/glm.hpp>
 
 #include "scene/scene.hpp"
@@ -17,5 +19,16 @@ struct LightMarker {
 
 // `margin`: how far inside the view's edge an off-screen marker is put, in pixels.
 LightMarker light_marker(const scene::Camera& camera, glm::vec3 light_position, glm::vec2 view_size, float margin);
+
+// The light's outline in the render view, in pixels from its top left: a flat light's disc or
+// rectangle as the camera sees it, a sphere's silhouette (a circle about its centre, across the view
+// direction); `facing` the end of a short arrow from its centre along a flat light's emitting normal.
+// Empty where any of it is behind the camera, or the light is a point.
+struct LightOutline {
+    std::vector<glm::vec2> points;
+    glm::vec2 centre{0.0f}, facing{0.0f};
+    bool flat = false;
+};
+LightOutline light_outline(const scene::Camera& camera, const scene::Light& light, glm::vec2 view_size);
 
 }  // namespace fxview::ui

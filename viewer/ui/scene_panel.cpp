@@ -83,6 +83,7 @@ void ViewerScene::add_to(StateHash& h) const {
     h.add(c.pose.distance).add(c.fov_y_degrees).add(c.near_plane).add(c.far_plane);
     const glm::vec3 light = scene.light.world_position();
     h.add(light.x).add(light.y).add(light.z).add(scene.light.color.r).add(scene.light.color.g).add(scene.light.color.b).add(scene.light.intensity).add(scene.light.radius);
+    h.add(static_cast<int>(scene.light.shape)).add(scene.light.size.x).add(scene.light.size.y);
     h.add(scene.light.spectrum);
     h.add(scene.background.r).add(scene.background.g).add(scene.background.b).add(scene.background.a);
     h.add(scene.environment.source).add(scene.environment.rotation_degrees).add(scene.environment.intensity);
@@ -117,6 +118,41 @@ void draw_light_spectrum(scene::Light& light, const render::EffectSession* sessi
         ImGui::SetTooltip("The light's spectrum in every spectral effect: it overrides the effect's '%s' while set", follower->ui.label.empty() ? follower->name.c_str() : follower->ui.label.c_str());
 }
 
+namespace {
+
+// The light's shape and size: a sphere (a point at radius 0), a disc or a rectangle facing the origin.
+void draw_light_shape(scene::Light& light, glm::vec3 position, const std::string& light_warning) {
+    const char* shapes[] = {"sphere", "disc", "rectangle"};
+    int shape = static_cast<int>(light.shape);
+    if (ImGui::Combo("light shape", &shape, shapes, 3)) light.shape = static_cast<scene::LightShape>(shape);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("sphere: a lamp (a point at radius 0). disc, rectangle: a flat panel or window facing the origin, as bright "
+                          "there as the point light; nearer surfaces get more of its light");
+    const float distance = glm::length(position);
+    if (light.shape == scene::LightShape::Rectangle) {
+        ImGui::DragFloat2("light width, height", &light.size.x, 0.01f, 0.0f, 1e3f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    } else {
+        ImGui::DragFloat("light radius", &light.radius, 0.01f, 0.0f, 1e3f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+        if (ImGui::IsItemHovered()) {
+            // Seen from the origin: a sphere subtends asin(R / D), a disc facing it atan(R / D).
+            const float angle = light.shape == scene::LightShape::Sphere ? (distance > light.radius ? std::asin(light.radius / distance) : 1.5708f)
+                                                                          : std::atan2(light.radius, distance);
+            ImGui::SetTooltip("0: a point light. Larger: a lamp, a ceiling panel, a window (%.1f degrees angular radius seen from the origin). "
+                              "Reflections and diffraction orders show its size; techniques that treat it as a point say so",
+                              glm::degrees(angle));
+        }
+    }
+    if (!light_warning.empty()) {
+        const size_t from = light_warning.find("treats");
+        const std::string note = from == std::string::npos ? light_warning : light_warning.substr(from);
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
+        ImGui::TextWrapped("This technique %s", note.c_str());
+        ImGui::PopStyleColor();
+    }
+}
+
+}  // namespace
+
 void draw_scene_panel(ViewerScene& view, const std::string& technique, bool has_effect, const std::string& light_warning,
                       std::string& status) {
     ImGui::TextWrapped("Turn with the left mouse button, move with the right, zoom with the wheel.");
@@ -130,16 +166,7 @@ void draw_scene_panel(ViewerScene& view, const std::string& technique, bool has_
     glm::vec3 light = view.scene.light.world_position();
     if (ImGui::DragFloat3("light position", &light.x, 0.05f))
         view.scene.light.pose.position = glm::inverse(glm::mat3_cast(view.scene.light.pose.rotation)) * light;
-    ImGui::DragFloat("light radius", &view.scene.light.radius, 0.01f, 0.0f, 1e3f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
-    if (ImGui::IsItemHovered()) {
-        const float distance = glm::length(light);
-        const float angle = distance > view.scene.light.radius ? glm::degrees(std::asin(view.scene.light.radius / distance)) : 90.0f;
-        ImGui::SetTooltip("0: a point light. Larger: a lamp, a ceiling panel, a window (%.1f degrees angular radius seen from the origin). "
-                          "Reflections and diffraction orders show its size; techniques that treat it as a point say so",
-                          angle);
-    }
-    if (!light_warning.empty())
-        ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "This technique treats the light as a point:\nits radius changes nothing here.");
+    draw_light_shape(view.scene.light, light, light_warning);
     ImGui::Checkbox("show the light in the view", &view.show_light);
     ImGui::ColorEdit4("background", &view.scene.background.r, ImGuiColorEditFlags_Float);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Linear RGBA the picture is cleared to; where alpha is 0 the view shows its grey backdrop");
@@ -208,6 +235,17 @@ void draw_light_gizmo(const ViewerScene& view, ImDrawList* list, ImVec2 origin, 
     const LightMarker marker = light_marker(view.scene.camera, view.scene.light.world_position(), {shown.x, shown.y}, r * 3.0f);
     const ImVec2 at(origin.x + marker.at.x, origin.y + marker.at.y);
     const ImU32 colour = view.selected == Target::Light ? IM_COL32(255, 220, 60, 255) : IM_COL32(255, 240, 180, 220);
+    // The light's shape where it is sized and wholly in front of the camera: its outline, and for a
+    // flat light the way it faces.
+    const LightOutline outline = light_outline(view.scene.camera, view.scene.light, {shown.x, shown.y});
+    if (!outline.points.empty()) {
+        std::vector<ImVec2> points;
+        for (const glm::vec2 p : outline.points) points.emplace_back(origin.x + p.x, origin.y + p.y);
+        list->AddPolyline(points.data(), static_cast<int>(points.size()), colour, ImDrawFlags_Closed, 2.0f);
+        if (outline.flat)
+            list->AddLine(ImVec2(origin.x + outline.centre.x, origin.y + outline.centre.y), ImVec2(origin.x + outline.facing.x, origin.y + outline.facing.y),
+                          colour, 1.5f);
+    }
     list->AddCircleFilled(at, r, colour);
     list->AddCircle(at, r, IM_COL32(0, 0, 0, 200), 0, 1.5f);
     if (marker.on_screen) {

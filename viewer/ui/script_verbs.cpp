@@ -88,6 +88,7 @@ void Viewer::perform(const ScriptAction& action) {
         {"brdf-measured", &Viewer::verb_brdf_measured},
         {"environment", &Viewer::verb_environment},
         {"light-spectrum", &Viewer::verb_light_spectrum},
+        {"light-shape", &Viewer::verb_light_shape},
         {"exposure", &Viewer::verb_exposure},
         {"tone-map", &Viewer::verb_tone_map},
         {"brdf-view", &Viewer::verb_brdf_view},
@@ -238,6 +239,18 @@ void Viewer::verb_light_spectrum(const ScriptAction& a) {  // as the Scene tab's
         (void)session()->values_for(probe);  // an unknown name: UsageError naming the library, the light unchanged
     }
     view_.scene.light.spectrum = name;
+}
+
+void Viewer::verb_light_shape(const ScriptAction& a) {  // as the Scene tab's light shape and size
+    const std::optional<scene::LightShape> shape = scene::parse_light_shape(a.arguments[0]);
+    if (!shape) throw UsageError("light-shape: sphere R, disc R or rectangle W H");
+    const bool rectangle = *shape == scene::LightShape::Rectangle;
+    if (a.arguments.size() != (rectangle ? 3u : 2u)) throw UsageError(rectangle ? "light-shape rectangle W H" : "light-shape " + a.arguments[0] + " R");
+    const float first = number(a, a.arguments[1]), second = rectangle ? number(a, a.arguments[2]) : 0.0f;
+    if (!(first >= 0 && first <= 1e3f && second >= 0 && second <= 1e3f)) throw UsageError("light-shape: sizes from 0 to 1000 world units");
+    view_.scene.light.shape = *shape;
+    if (rectangle) view_.scene.light.size = glm::vec2(first, second);
+    else view_.scene.light.radius = first;
 }
 
 void Viewer::verb_exposure(const ScriptAction& a) { display_settings_.exposure_ev = number(a, a.arguments[0]); }
