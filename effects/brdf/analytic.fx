@@ -9,7 +9,7 @@
 #include "environment_pbr.glsl"
 
 uniform float LightIrradiance < string UIName = "Light irradiance E"; float UIMin = 0; float UIMax = 20; float UIStep = 0.1; string UIGroup = "Light";
-                                string UIHelp = "Irradiance the point light delivers at normal incidence (no distance fall-off)"; > = 3.0;
+                                string UIHelp = "Irradiance the point light delivers at normal incidence (no distance fall-off); a scene light intensity (--light-intensity, Scene tab) sets it in lux"; string SceneLight = "irradiance"; > = 3.0;
 
 uniform vec3 BaseColor < string UIName = "Base colour"; string UIWidget = "color"; string UIGroup = "PBR";
                          string UIHelp = "Linear F0 of metals (gold 1.00/0.71/0.29, copper 0.95/0.64/0.54), albedo of non-metals; also Lambert's albedo"; > = {1.0, 0.71, 0.29};

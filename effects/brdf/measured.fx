@@ -9,7 +9,7 @@
 uniform sampler3D Measured < string ResourceName = "sample-brdf.csv"; string Filter = "linear"; string Wrap = "clamp";
                              string UIName = "Measured BRDF";
                              string UIHelp = "Grid CSV (theta_in_deg,theta_out_deg,phi_out_deg,r,g,b; uniform over 0..90 / 0..180) or MERL .binary"; >;
-uniform float LightIrradiance < string UIName = "Light irradiance E"; float UIMin = 0; float UIMax = 20; float UIStep = 0.1; string UIGroup = "Light"; > = 3.0;
+uniform float LightIrradiance < string UIName = "Light irradiance E"; float UIMin = 0; float UIMax = 20; float UIStep = 0.1; string UIGroup = "Light"; string SceneLight = "irradiance"; > = 3.0;
 uniform vec3 FitDiffuse < string UIName = "cd"; string UIWidget = "color"; string UIGroup = "Ashikhmin-Shirley, simplified (fit model)"; > = {0.15, 0.10, 0.05};
 uniform vec3 FitSpecular < string UIName = "cs"; string UIWidget = "color"; string UIGroup = "Ashikhmin-Shirley, simplified (fit model)"; > = {0.57, 0.39, 0.20};
 uniform float FitExponent < string UIName = "ns"; float UIMin = 1; float UIMax = 10000; string UIGroup = "Ashikhmin-Shirley, simplified (fit model)"; > = 150.0;

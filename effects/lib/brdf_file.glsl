@@ -5,7 +5,7 @@
 #include "environment.glsl"
 
 uniform float LightIrradiance < string UIName = "Light irradiance E"; float UIMin = 0; float UIMax = 20; float UIStep = 0.1; string UIGroup = "Light";
-                                string UIHelp = "Irradiance the point light delivers at normal incidence (no distance fall-off)"; > = 3.0;
+                                string UIHelp = "Irradiance the point light delivers at normal incidence (no distance fall-off); a scene light intensity (--light-intensity, Scene tab) sets it in lux"; string SceneLight = "irradiance"; > = 3.0;
 
 // BRDF() at a surface point, and n·l; 0 where the light or the eye is below the surface.
 vec3 fx_brdf_at(vec3 position, vec3 normal, vec3 tangent, out float nl) {

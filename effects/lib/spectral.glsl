@@ -27,8 +27,10 @@ uniform int Steps < string UIName = "Steps"; int UIMin = 1; int UIMax = 50; stri
                     string UIHelp = "Wavelength step in nm: the simplest level of detail"; > = 1;
 uniform float K < string UIName = "k"; float UIMin = 0; float UIMax = 1; float UIStep = 0.0001; string UIGroup = "Integration";
                   int UIOrder = 4; string UIHelp = "Normalisation; 0 derives k = 1 / sum(ybar) so that a constant 1 gives Y = 1"; > = 0.0;
-uniform int OutputMode < string UIName = "Out of gamut"; string UIWidget = "combo"; string UIItems = "clip|desaturate|scale";
-                         string UIGroup = "Colorimetry"; int UIOrder = 3; > = 0;
+uniform int OutputMode < string UIName = "Out of gamut"; string UIWidget = "combo"; string UIItems = "clip|desaturate|scale|unbounded";
+                         string UIGroup = "Colorimetry"; int UIOrder = 3;
+                         string UIHelp = "clip: to [0, 1] (the thesis' 8-bit output); desaturate towards grey until no channel is negative; scale so the largest channel is 1; unbounded: negatives to 0, brightness kept (scene-referred: a light in lux or lumens sets it, leave the rest to exposure and tone mapping)";
+                         string SceneLight = "output-range"; > = 0;
 
 const int kPackedFirstNm = 324;
 
@@ -73,5 +75,5 @@ vec3 xyz_to_srgb(vec3 xyz) {
         float highest = max(rgb.r, max(rgb.g, rgb.b));
         if (highest > 1.0) rgb /= highest;
     }
-    return clamp(rgb, 0.0, 1.0);
+    return OutputMode == 3 ? max(rgb, 0.0) : clamp(rgb, 0.0, 1.0);
 }

@@ -44,7 +44,8 @@ uniform float PitFraction < string UIName = "Pit width"; float UIMin = 0.05; flo
 uniform int EnvironmentBand < string UIName = "Environment band"; int UIMin = 1; int UIMax = 50; string UIUnits = "nm"; string UIGroup = "Diffraction orders";
                                string UIHelp = "Under --environment sky or studio: each order looks up the surroundings once per band of this many nm (1: at every sample; 10: the sun's rainbow image moves 0.4 degrees per band in the first order)"; > = 10;
 uniform float Lamp < string UIName = "Lamp"; float UIMin = 0; float UIMax = 4; float UIStep = 0.05; string UIGroup = "Diffraction orders";
-                     string UIHelp = "Scales the scene's light (0: the disc is lit by the environment alone, --environment sky or studio)"; > = 1.0;
+                     string UIHelp = "Scales the scene's light (0: the disc is lit by the environment alone, --environment sky or studio). A scene light intensity (--light-intensity, Scene tab) sets it: E / (π Y) for the light spectrum's luminance Y";
+                     string SceneLight = "spectral-brightness"; > = 1.0;
 
 // The surroundings mirrored in the disc (fig. 34, 36): a cube map added in RGB after the spectral part.
 texture EnvironmentTexture < string ResourceName = "sky_cross.png"; string ResourceType = "CUBE"; string ColorSpace = "sRGB"; >;

@@ -18,7 +18,8 @@ uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = 
 uniform int ObjectSpectrum < string UIName = "Object spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
                              string UIHelp = "Index in spectra/library.txt (10-23 = CIE test colour samples)"; > = 14;
 uniform float Brightness < string UIName = "Brightness"; float UIMin = 0; float UIMax = 8; float UIStep = 0.1; string UIGroup = "Lighting";
-                           string UIHelp = "Intensity of the lamp (the scene's light); an environment lights the object at its own intensity"; > = 2.0;
+                           string UIHelp = "Intensity of the lamp (the scene's light); an environment lights the object at its own intensity. A scene light intensity (--light-intensity, Scene tab) sets it: E / (π Y) for the light spectrum's luminance Y";
+                           string SceneLight = "spectral-brightness"; > = 2.0;
 uniform float Kd < string UIName = "Diffuse kd"; float UIMin = 0; float UIMax = 1; string UIGroup = "Lighting"; > = 0.8;
 uniform float Ks < string UIName = "Specular ks"; float UIMin = 0; float UIMax = 1; string UIGroup = "Lighting";
                    string UIHelp = "Peak of the thesis' highlight lobe, which is not normalised: the surface can reflect more light than falls on it (lit head-on, Kd = Ks = 1 and power 1: 1.67 with Phong, 1.91 with Blinn)"; > = 0.4;

@@ -38,6 +38,10 @@ void add_scene_options(CLI::App& command, SceneOptions& o) {
         ->check(finite_range(0.0, 60.0))
         ->excludes(radius)
         ->excludes(size);
+    command.add_option("--light-intensity", o.light_intensity,
+                       "The light's intensity in photometric units: 500lx (illuminance at the origin), 800lm (flux), 120cd, "
+                       "3000nit (luminance of its surface); scene radiance is then luminance in cd/m2 (pair it with --exposure). "
+                       "Default: each effect's own light strength");
     command.add_option("--light-spectrum", o.light_spectrum,
                        "The light's spectrum, a name of the spectral library (`fxview spectra list`): every spectral effect's light "
                        "spectrum follows it (parameters annotated SceneLight = \"spectrum\")");
@@ -123,6 +127,14 @@ RenderRequest to_render_request(const SceneOptions& o) {
     scene.light.pose.rotation = math::rotation_from_euler_degrees(parse_vec3("--light-rotate", o.light_rotate));
     set_light_shape(scene.light, o, preset);
     scene.light.spectrum = o.light_spectrum.value_or(preset.light_spectrum.value_or(""));
+    if (o.light_intensity) {
+        scene.light.intensity = scene::parse_light_intensity(*o.light_intensity);
+        if (!scene.light.intensity)
+            throw UsageError("--light-intensity: '" + excerpt(*o.light_intensity) + "' is not a number with a unit: lx, lm, cd or nit (e.g. 500lx)");
+    } else if (preset.light_intensity) {
+        scene.light.intensity = scene::parse_light_intensity(*preset.light_intensity);  // checked when the preset was read
+    }
+    if (scene.light.intensity) (void)scene::illuminance_at_origin(scene.light, *scene.light.intensity);  // a unit the light cannot have: said now
     scene::SceneObject& object = scene.objects.front();
     object.mesh = o.mesh;
     object.pose.position = parse_vec3("--object-position", o.object_position);

@@ -31,7 +31,7 @@ struct SceneOptions {
     std::string object_scale = "1,1,1";
     std::string background = "0,0,0,0";
     // Unset: the preset's "scene" settings (effect/preset.hpp), else none / 0 / 1 / none.
-    std::optional<std::string> environment, tone_map, light_spectrum, light_shape, light_size;
+    std::optional<std::string> environment, tone_map, light_spectrum, light_shape, light_size, light_intensity;
     std::optional<float> environment_rotate, environment_intensity, exposure, light_radius, light_angle;
     std::optional<int> samples_given;
     bool gl_debug = false;

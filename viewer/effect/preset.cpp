@@ -13,6 +13,7 @@
 #include "effect/bparam_file.hpp"
 #include "effect/parser.hpp"
 #include "scene/light_geometry.hpp"
+#include "scene/light_intensity.hpp"
 
 namespace fxview::effect {
 
@@ -145,6 +146,9 @@ PresetScene load_preset_scene(const std::string& path, const ResourceLimits& lim
                 size[static_cast<int>(i)] = static_cast<float>(side.get<double>());
             }
             scene.light_size = size;
+        } else if (key == "light_intensity") {
+            if (!value.is_string() || !scene::parse_light_intensity(value.get<std::string>())) throw bad("a number with a unit: lx, lm, cd or nit (\"500lx\")");
+            scene.light_intensity = value.get<std::string>();
         } else if (key == "light_spectrum") {
             if (!value.is_string() || value.get<std::string>().empty()) throw bad("a spectral-library name");
             scene.light_spectrum = value.get<std::string>();
@@ -157,7 +161,7 @@ PresetScene load_preset_scene(const std::string& path, const ResourceLimits& lim
             scene.samples = static_cast<int>(samples);
         } else {
             throw Error(where + "unknown scene setting \"" + excerpt(key) +
-                        "\" (environment, environment_rotate, environment_intensity, exposure, tone_map, samples, light_shape, light_radius, light_size, light_spectrum)");
+                        "\" (environment, environment_rotate, environment_intensity, exposure, tone_map, samples, light_shape, light_radius, light_size, light_spectrum, light_intensity)");
         }
     }
     return scene;

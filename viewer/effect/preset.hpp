@@ -26,12 +26,12 @@ void save_preset(const std::string& path, const Effect& effect, const std::strin
 // The scene and display settings a preset may carry besides its values, {"scene": {"environment":
 // "studio", "environment_rotate": 0, "environment_intensity": 1, "exposure": 0, "tone_map":
 // "pbr-neutral", "samples": 4, "light_shape": "disc", "light_radius": 0.5, "light_size": [2, 1],
-// "light_spectrum": "F11"}}: what the CLI and the viewer use unless told otherwise. Error naming
+// "light_spectrum": "F11", "light_intensity": "500lx"}}: what the CLI and the viewer use unless told otherwise. Error naming
 // file and line for a wrong type, a value out of range or an unknown key. Environment files resolve
 // from the preset's folder and must be readable under `access` (the effect's policy; the preset's
 // folder is added), as an effect's textures.
 struct PresetScene {
-    std::optional<std::string> environment, tone_map, light_spectrum, light_shape;
+    std::optional<std::string> environment, tone_map, light_spectrum, light_shape, light_intensity;
     std::optional<float> environment_rotate, environment_intensity, exposure, light_radius;
     std::optional<glm::vec2> light_size;  // a rectangle light's width and height
     std::optional<int> samples;

@@ -30,6 +30,7 @@ double output_gain(const SpectralSetup& s, double reference_brightness) {
 std::array<double, 4> to_rgba(const spectral::Vec3& xyz, int mode) {
     const auto mapping = mode == 1 ? spectral::GamutMapping::Desaturate
                          : mode == 2 ? spectral::GamutMapping::Scale
+                         : mode == 3 ? spectral::GamutMapping::Unbounded
                                      : spectral::GamutMapping::Clip;
     const spectral::Vec3 rgb = spectral::xyz_to_linear_srgb(xyz, mapping);
     return {rgb[0], rgb[1], rgb[2], 1.0};

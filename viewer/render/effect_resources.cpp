@@ -133,6 +133,17 @@ const spectral::PackedTexture* EffectResources::generated(const std::string& tex
     return &generated_.emplace(texture_name, make_generated(*resource->second)).first->second;
 }
 
+const spectral::PackedTexture* EffectResources::generated_resource(const std::string& resource) const {
+    const spectral::PackedTexture* found = nullptr;
+    for (const auto& [name, texture] : generated_resources_) {
+        if (texture->files.empty() || texture->files[0] != resource) continue;
+        const spectral::PackedTexture* packed = generated(name);
+        // The float copy where the effect has an 8-bit one besides (spectral.glsl's CmfBytes).
+        if (!found || packed->texture.format == texture::PixelFormat::RGBA32F) found = packed;
+    }
+    return found;
+}
+
 const GpuTexture* EffectResources::acquire(const std::string& texture_name) {
     if (const auto environment = environment_resources_.find(texture_name); environment != environment_resources_.end())
         return environment_ ? environment_->texture(environment->second) : nullptr;

@@ -54,6 +54,8 @@ public:
     // CPU copies of generated textures ("spectral:cmf", "spectral:library", "spectral:fourier"), for
     // CPU references (made on first use; thread-safe); nullptr for other names.
     const spectral::PackedTexture* generated(const std::string& texture_name) const;
+    // The same by resource name ("spectral:library"): whichever of the effect's textures it names.
+    const spectral::PackedTexture* generated_resource(const std::string& resource) const;
     // CPU copies of file textures exactly as uploaded (after format conversion), for CPU references.
     const texture::TextureData* cpu_copy(const std::string& texture_name) const;
     // Legacy effects: textures replaced by placeholders, each "file:line: warning: ...".

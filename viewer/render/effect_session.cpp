@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 
 #include "core/error.hpp"
 #include "core/text.hpp"
 #include "lighting/environment_sources.hpp"
+#include "spectral/packing.hpp"
 
 namespace fxview::render {
 
@@ -193,28 +195,70 @@ std::string EffectSession::unused_light_radius_warning(const scene::Light& light
 std::vector<std::string> EffectSession::scene_warnings(const scene::Scene& scene) const {
     std::vector<std::string> warnings;
     for (std::string warning :
-         {unused_environment_warning(scene.environment), unused_light_radius_warning(scene.light), unused_light_spectrum_warning(scene.light)})
+         {unused_environment_warning(scene.environment), unused_light_radius_warning(scene.light), unused_light_spectrum_warning(scene.light),
+          unused_light_intensity_warning(scene.light)})
         if (!warning.empty()) warnings.push_back(std::move(warning));
     return warnings;
 }
 
-bool EffectSession::follows_scene_light(const effect::Parameter& parameter) {
+std::string EffectSession::scene_light_role(const effect::Parameter& parameter) {
     for (const effect::Annotation& a : parameter.annotations)
-        if (a.name == "SceneLight" && a.value.is_string && a.value.text == "spectrum") return true;
-    return false;
+        if (a.name == "SceneLight" && a.value.is_string) return a.value.text;
+    return "";
 }
 
+bool EffectSession::follows_scene_light(const effect::Parameter& parameter) { return scene_light_role(parameter) == "spectrum"; }
+
+namespace {
+
+// The luminance Y of library spectrum `index` as the spectral effects integrate it by default (CIE
+// 1931, 360-830 nm at 1 nm, over Σ ȳ): 1 for a constant 1. 1 where the effect has no spectra.
+double library_luminance(const EffectResources& resources, int index) {
+    const spectral::PackedTexture* library = resources.generated_resource("spectral:library");
+    const spectral::PackedTexture* cmf = resources.generated_resource("spectral:cmf");
+    if (!library || !cmf || index < 0 || index >= library->count) return 1.0;
+    double weighted = 0, ybar = 0;
+    for (int nm = 360; nm <= 830; ++nm) {
+        const double y = spectral::cmf_value(*cmf, 0, nm)[1];
+        weighted += spectral::packed_value(*library, index, nm) * y;
+        ybar += y;
+    }
+    return weighted > 0 ? weighted / ybar : 1.0;
+}
+
+}  // namespace
+
 effect::ParameterValues EffectSession::values_for(const scene::Scene& scene) const {
-    if (scene.light.spectrum.empty()) return values_;
+    if (scene.light.spectrum.empty() && !scene.light.intensity) return values_;
     effect::ParameterValues values = values_;
+    const effect::Parameter* spectrum_follower = nullptr;
     for (const effect::Parameter& p : loaded_->effect->parameters) {
         if (!follows_scene_light(p)) continue;
+        spectrum_follower = &p;
+        if (scene.light.spectrum.empty()) continue;
         if (std::find(p.ui.items.begin(), p.ui.items.end(), scene.light.spectrum) == p.ui.items.end()) {
             std::string names;
             for (const std::string& item : p.ui.items) names += (names.empty() ? "" : ", ") + item;
             throw UsageError("light spectrum '" + scene.light.spectrum + "' is not in the spectral library (" + names + ")");
         }
         effect::set_value_from_text(*loaded_->effect, values, p.name + "=" + scene.light.spectrum);
+    }
+    if (!scene.light.intensity) return values;
+    const double lux = scene::illuminance_at_origin(scene.light, *scene.light.intensity);
+    for (const effect::Parameter& p : loaded_->effect->parameters) {
+        const std::string role = scene_light_role(p);
+        if (role == "irradiance") {
+            values.numbers[p.name] = {static_cast<float>(lux)};
+        } else if (role == "spectral-brightness") {
+            // The light spectrum's luminance divided out: Brightness × Y(S) = E / π.
+            const auto spectrum = spectrum_follower ? values.numbers.find(spectrum_follower->name) : values.numbers.end();
+            const int index = spectrum != values.numbers.end() && !spectrum->second.empty() ? static_cast<int>(spectrum->second[0]) : -1;
+            values.numbers[p.name] = {static_cast<float>(lux / (std::numbers::pi * library_luminance(*loaded_->resources, index)))};
+        } else if (role == "output-range") {
+            // Photometric light is scene-referred: "clip" (to [0, 1]) becomes "unbounded", the other mappings stay.
+            auto& mode = values.numbers[p.name];
+            if (mode.empty() || mode[0] == 0.0f) mode = {3.0f};
+        }
     }
     return values;
 }
@@ -227,10 +271,20 @@ std::string EffectSession::unused_light_spectrum_warning(const scene::Light& lig
            light.spectrum + "' changes nothing here";
 }
 
+std::string EffectSession::unused_light_intensity_warning(const scene::Light& light) const {
+    if (!light.intensity) return "";
+    for (const effect::Parameter& p : loaded_->effect->parameters) {
+        const std::string role = scene_light_role(p);
+        if (role == "irradiance" || role == "spectral-brightness") return "";
+    }
+    return path_ + ": warning: no parameter of this effect takes the light's intensity (SceneLight = \"irradiance\" or \"spectral-brightness\"); " +
+           scene::to_string(*light.intensity) + " changes nothing here";
+}
+
 void EffectSession::render(const scene::Scene& scene, const gl::RenderTarget& target, FrameTiming timing, bool clear_target) {
     if (loaded_->resources->uses_environment()) loaded_->resources->set_environment(&environment(scene.environment));
     const effect::CompiledTechnique& technique = loaded_->techniques.at(technique_);
-    if (scene.light.spectrum.empty())  // the user's values as they are: no copy per frame
+    if (scene.light.spectrum.empty() && !scene.light.intensity)  // the user's values as they are: no copy per frame
         renderer_.render(scene, technique, values_, *loaded_->resources, target, timing, clear_target);
     else
         renderer_.render(scene, technique, values_for(scene), *loaded_->resources, target, timing, clear_target);

@@ -55,15 +55,21 @@ public:
     // The same for a sized light the selected technique treats as a point (LIGHTRADIUS unread) or, a flat
     // one, as a sphere or a point (LIGHTSHAPE unread).
     std::string unused_light_radius_warning(const scene::Light& light) const;
-    // A scene light spectrum (scene::Light::spectrum) that no parameter of the effect follows.
+    // A scene light spectrum (scene::Light::spectrum) that no parameter of the effect follows; likewise
+    // a scene light intensity (scene::Light::intensity).
     std::string unused_light_spectrum_warning(const scene::Light& light) const;
+    std::string unused_light_intensity_warning(const scene::Light& light) const;
     std::vector<std::string> scene_warnings(const scene::Scene& scene) const;  // those of the above that apply
     // The values a frame of `scene` uses: the user's, with every parameter annotated SceneLight =
-    // "spectrum" set to the scene light's spectrum where it has one (the user's own value is kept for
-    // when it has none). UsageError naming the library's spectra for an unknown name.
+    // "spectrum" set to the scene light's spectrum where it has one, and those annotated "irradiance"
+    // or "spectral-brightness" to its intensity where it has one (scene/light_intensity.hpp; the user's
+    // own values are kept for when it has none). UsageError naming the library's spectra for an
+    // unknown name, or for an intensity unit the light's shape cannot have.
     effect::ParameterValues values_for(const scene::Scene& scene) const;
     // Whether a parameter follows the scene light's spectrum (SceneLight = "spectrum").
     static bool follows_scene_light(const effect::Parameter& parameter);
+    // Its SceneLight annotation: "spectrum", "irradiance", "spectral-brightness", or "" for none.
+    static std::string scene_light_role(const effect::Parameter& parameter);
     // What a technique's compiled passes say about it, found once when it is compiled (the viewer
     // asks every frame). Unknown techniques: nothing read, not animated, no textures of their own.
     struct TechniqueTraits {

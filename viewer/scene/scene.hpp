@@ -1,10 +1,12 @@
 // What is rendered: a camera, one light and objects, each placed independently (seed 002 ch. 4.1).
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "math/transform.hpp"
 #include "scene/light_geometry.hpp"
+#include "scene/light_intensity.hpp"
 
 namespace fxview::scene {
 
@@ -23,8 +25,8 @@ struct Camera {
 // point light's irradiance at the origin. Effects read them through the LIGHTRADIUS and LIGHTSHAPE semantics.
 struct Light {
     math::Pose pose{glm::vec3(2.0f, 2.0f, 3.0f), glm::quat(1.0f, 0.0f, 0.0f, 0.0f)};
-    glm::vec3 color{1.0f};
-    float intensity = 1.0f;
+    // In photometric units (scene/light_intensity.hpp); empty: each effect's own light strength.
+    std::optional<LightIntensity> intensity;
     LightShape shape = LightShape::Sphere;
     float radius = 0.0f;       // world units, a sphere's or a disc's; 0: a point light
     glm::vec2 size{1.0f};      // a rectangle's width and height, world units

@@ -60,7 +60,7 @@ Vec3 xyz_to_linear_srgb(const Vec3& xyz, GamutMapping mapping) {
         const double highest = std::max({rgb[0], rgb[1], rgb[2]});
         if (highest > 1) for (double& c : rgb) c /= highest;
     }
-    for (double& c : rgb) c = std::clamp(c, 0.0, 1.0);
+    for (double& c : rgb) c = mapping == GamutMapping::Unbounded ? std::max(c, 0.0) : std::clamp(c, 0.0, 1.0);
     return rgb;
 }
 

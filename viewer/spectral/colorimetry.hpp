@@ -30,9 +30,10 @@ struct Integration {
 Vec3 spectrum_to_xyz(const Spectrum& spectrum, const Observer& observer, const Integration& range = {});
 std::array<double, 2> chromaticity(const Vec3& xyz);  // x, y (eq. 4-6); (0,0) for black
 
-enum class GamutMapping { Clip, Desaturate, Scale };
+enum class GamutMapping { Clip, Desaturate, Scale, Unbounded };
 // Eq. 9 matrix; then out-of-gamut values are clipped to [0,1], desaturated towards the luminance
-// grey until no channel is negative (then clipped above), or uniformly scaled so the largest is 1.
+// grey until no channel is negative (then clipped above), uniformly scaled so the largest is 1, or
+// (Unbounded: scene-referred output, for photometric lights) clipped at 0 only.
 Vec3 xyz_to_linear_srgb(const Vec3& xyz, GamutMapping mapping = GamutMapping::Clip);
 Vec3 xyz_to_linear_srgb_unclipped(const Vec3& xyz);
 double srgb_encode(double linear);  // IEC 61966-2-1, input clamped to [0,1]

@@ -82,7 +82,8 @@ void ViewerScene::add_to(StateHash& h) const {
     h.add(c.pose.rotation.w).add(c.pose.rotation.x).add(c.pose.rotation.y).add(c.pose.rotation.z).add(c.pose.pan.x).add(c.pose.pan.y);
     h.add(c.pose.distance).add(c.fov_y_degrees).add(c.near_plane).add(c.far_plane);
     const glm::vec3 light = scene.light.world_position();
-    h.add(light.x).add(light.y).add(light.z).add(scene.light.color.r).add(scene.light.color.g).add(scene.light.color.b).add(scene.light.intensity).add(scene.light.radius);
+    h.add(light.x).add(light.y).add(light.z).add(scene.light.radius);
+    h.add(scene.light.intensity ? scene.light.intensity->value : -1.0).add(scene.light.intensity ? static_cast<int>(scene.light.intensity->unit) : -1);
     h.add(static_cast<int>(scene.light.shape)).add(scene.light.size.x).add(scene.light.size.y);
     h.add(scene.light.spectrum);
     h.add(scene.background.r).add(scene.background.g).add(scene.background.b).add(scene.background.a);
@@ -142,13 +143,43 @@ void draw_light_shape(scene::Light& light, glm::vec3 position, const std::string
                               glm::degrees(angle));
         }
     }
-    if (!light_warning.empty()) {
-        const size_t from = light_warning.find("treats");
-        const std::string note = from == std::string::npos ? light_warning : light_warning.substr(from);
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
-        ImGui::TextWrapped("This technique %s", note.c_str());
-        ImGui::PopStyleColor();
+    // The intensity in photometric units, or each effect's own light strength.
+    bool photometric = light.intensity.has_value();
+    if (ImGui::Checkbox("light intensity", &photometric)) light.intensity = photometric ? std::optional(scene::LightIntensity{500.0}) : std::nullopt;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Off: each effect's own light strength (Brightness, E). On: the light in lx, lm, cd or nit; the picture is then "
+                          "luminance in cd/m2, so lower the exposure (View tab) to see it");
+    if (light.intensity) {
+        ImGui::SameLine();
+        float value = static_cast<float>(light.intensity->value);
+        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
+        if (ImGui::DragFloat("##intensity", &value, std::max(value, 1.0f) * 0.01f, 0.0f, 1e9f, "%.1f", ImGuiSliderFlags_AlwaysClamp)) light.intensity->value = value;
+        ImGui::SameLine();
+        const char* units[] = {"lx", "lm", "cd", "nit"};
+        int unit = static_cast<int>(light.intensity->unit);
+        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 4.0f);
+        if (ImGui::Combo("##unit", &unit, units, 4)) light.intensity->unit = static_cast<scene::LightIntensity::Unit>(unit);
+        try {
+            scene::Light probe = light;
+            probe.pose.position = position;  // the world position, as the renderer sees it
+            probe.pose.rotation = glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+            ImGui::TextDisabled("%.1f lx at the origin", scene::illuminance_at_origin(probe, *light.intensity));
+        } catch (const std::exception& error) {
+            ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", error.what());
+        }
     }
+    // Each warning (one per line) without its "file: warning:" head.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
+    size_t start = 0;
+    while (start < light_warning.size()) {
+        size_t end = light_warning.find('\n', start);
+        if (end == std::string::npos) end = light_warning.size();
+        const std::string line = light_warning.substr(start, end - start);
+        const size_t head = line.find("warning: ");
+        ImGui::TextWrapped("%s", head == std::string::npos ? line.c_str() : line.substr(head + 9).c_str());
+        start = end + 1;
+    }
+    ImGui::PopStyleColor();
 }
 
 }  // namespace

@@ -89,6 +89,7 @@ void Viewer::perform(const ScriptAction& action) {
         {"environment", &Viewer::verb_environment},
         {"light-spectrum", &Viewer::verb_light_spectrum},
         {"light-shape", &Viewer::verb_light_shape},
+        {"light-intensity", &Viewer::verb_light_intensity},
         {"exposure", &Viewer::verb_exposure},
         {"tone-map", &Viewer::verb_tone_map},
         {"brdf-view", &Viewer::verb_brdf_view},
@@ -251,6 +252,18 @@ void Viewer::verb_light_shape(const ScriptAction& a) {  // as the Scene tab's li
     view_.scene.light.shape = *shape;
     if (rectangle) view_.scene.light.size = glm::vec2(first, second);
     else view_.scene.light.radius = first;
+}
+
+void Viewer::verb_light_intensity(const ScriptAction& a) {  // as the Scene tab's light intensity
+    if (a.arguments[0] == "none") {
+        view_.scene.light.intensity.reset();
+        return;
+    }
+    const std::optional<scene::LightIntensity> intensity = scene::parse_light_intensity(a.arguments[0]);
+    if (!intensity) throw UsageError("light-intensity: a number with a unit, lx, lm, cd or nit (500lx), or none");
+    scene::Light probe = view_.scene.light;
+    (void)scene::illuminance_at_origin(probe, *intensity);  // a unit the light cannot have: refused, the light unchanged
+    view_.scene.light.intensity = intensity;
 }
 
 void Viewer::verb_exposure(const ScriptAction& a) { display_settings_.exposure_ev = number(a, a.arguments[0]); }

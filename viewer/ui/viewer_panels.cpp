@@ -142,8 +142,11 @@ void Viewer::draw_ui(int window_width, int window_height) {
             ImGui::EndTabItem();
         }
         if (ImGui::BeginTabItem("Scene", nullptr, tab_flags("Scene"))) {
-            draw_scene_panel(view_, session() ? session()->technique() : "", session() != nullptr,
-                             session() ? session()->unused_light_radius_warning(view_.scene.light) : "", status_);
+            std::string light_warnings;  // what the technique cannot show of the light, one per line
+            if (session())
+                for (const std::string& w : {session()->unused_light_radius_warning(view_.scene.light), session()->unused_light_intensity_warning(view_.scene.light)})
+                    if (!w.empty()) light_warnings += (light_warnings.empty() ? "" : "\n") + w;
+            draw_scene_panel(view_, session() ? session()->technique() : "", session() != nullptr, light_warnings, status_);
             draw_light_spectrum(view_.scene.light, session());
             environment_panel_.draw(view_.scene.environment, session());
             ImGui::EndTabItem();

@@ -125,6 +125,7 @@ private:
     void verb_environment(const ScriptAction& action);
     void verb_light_spectrum(const ScriptAction& action);
     void verb_light_shape(const ScriptAction& action);
+    void verb_light_intensity(const ScriptAction& action);
     void verb_exposure(const ScriptAction& action);
     void verb_tone_map(const ScriptAction& action);
     void verb_brdf_view(const ScriptAction& action);
