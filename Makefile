@@ -48,6 +48,7 @@ run: build
 	$(FXVIEW) render tests/effects/legacy/glow.fx --mesh sphere --size 512x512 --out out/sphere-legacy-glow.png
 	$(FXVIEW) render effects/spectral/cd.fx --mesh disc --camera-rotate 50,0,0 --light-angle 15 --size 512x512 --out out/disc-cd.png
 	$(FXVIEW) render effects/spectral/cd.fx --mesh disc --camera-rotate 50,0,0 --light-angle 2 --size 512x512 --out out/disc-cd-lamp.png
+	$(FXVIEW) render effects/spectral/cd.fx --mesh disc --camera-rotate 50,0,0 --light-shape rectangle --light-size 3,1 --size 512x512 --out out/disc-cd-window.png
 	$(FXVIEW) render effects/spectral/cd.fx --mesh disc --environment studio --set Lamp=0 --camera-rotate -25,15,0 --size 512x512 --out out/disc-cd-studio.png
 	$(FXVIEW) render effects/spectral/thinfilm.fx --technique FresnelFourier --mesh plane --set FilmIndex=1.5 --set SubstrateIndex=1.33 --set Thickness=150 --set Variation=900 --environment sky:35 --camera-rotate -70,0,0 --camera-distance 2.2 --size 512x512 --out out/plane-oil-sky.png
 	$(FXVIEW) render effects/spectral/thinfilm.fx --technique FresnelFourier --mesh knot --set FilmIndex=2.4 --set SubstrateIndex=2.54 --set SubstrateKappa=3.43 --set Thickness=60 --set Variation=200 --set Brightness=1 --environment studio --size 512x512 --out out/knot-anodized-studio.png

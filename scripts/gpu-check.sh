@@ -82,6 +82,14 @@ for t in "thinfilm.fx BubbleFourier" "wavelength.fx Phong" "cd.fx Orders"; do
   set -- $t
   "$fxview" compare "effects/spectral/$1" -t "$2" --mesh "$([ "$1" = cd.fx ] && echo disc || echo sphere)" --environment textures/colour_room.hdr --ground-truth --size 64x64 --json | tee -a "$out/compare-uplifted-image.jsonl" || true
 done
+# Issue #25 item 1: flat lights (a disc, a window) through the orders and wavelength.fx's lobes; the
+# photometric intensity (a white Lambertian facing 120 lx shows 120 / pi), and the cost of the orders.
+for shape in "--light-shape disc --light-angle 15" "--light-shape rectangle --light-size 3,1"; do
+  "$fxview" compare effects/spectral/cd.fx -t Orders --mesh disc --camera-rotate 50,0,0 $shape --size 96x96 --json | tee -a "$out/compare-flat-lights.jsonl" || true
+  "$fxview" compare effects/spectral/wavelength.fx $shape --ground-truth --size 64x64 --json | tee -a "$out/compare-flat-lights.jsonl" || true
+  "$fxview" bench effects/spectral/cd.fx --techniques Thesis,Orders --mesh disc --camera-rotate 50,0,0 $shape --frames 5 | tee -a "$out/bench-cd-flat.md" || true
+done
+"$fxview" pick effects/spectral/wavelength.fx -t Lambert --set Kd=1 --set ObjectSpectrum=E --light-position 0,0,3 --light-intensity 120lx --size 33x33 --at 16,16 | tee "$out/pick-photometric.txt" || true
 # Issue #28: a .brdf's own importance sampling (isFunc) through the NVIDIA driver, and PBR's sampled
 # specular lobe against the CPU split sum and the ground truth.
 "$fxview" brdf-check tests/effects/brdf/explorer/is_func_sampler.brdf --phi-i 0 --json | tee "$out/brdf-check-isfunc.json" || true

@@ -117,7 +117,11 @@ TEST_CASE("nonsense arguments exit with 2 and say what is wrong") {
         {"render --light-radius 1 --light-angle 5", "excludes"},
         {"render --light-radius -1", "--light-radius"},
         {"render --light-angle 90", "--light-angle"},
-        {"render --light-position 0,0,0 --light-angle 10", "--light-radius instead"},
+        {"render --light-position 0,0,0 --light-angle 10", "give --light-radius or --light-size instead"},
+        {"render --light-shape triangle", "is not sphere, disc or rectangle"},
+        {"render --light-shape disc", "give its size"},
+        {"render --light-intensity 500", "not a number with a unit"},
+        {"render --light-intensity 500nit", "a point light has no surface"},
     };
     for (const auto& [arguments, expected] : cases) {
         const std::string shown = arguments;
