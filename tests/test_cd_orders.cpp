@@ -132,14 +132,17 @@ TEST_CASE("a sized light that a technique cannot use is said") {
     scene::Scene scene;
     scene.light.radius = 0.5f;
     const std::string effects = FXVIEW_SOURCE_EFFECTS_DIR;
-    const auto film_session = app::open_effect_session(app::EffectOptions{effects + "/spectral/thinfilm.fx"});
-    const render::EffectSession& film = *film_session;
-    CHECK(film.unused_light_radius_warning(scene.light).find("thinfilm.fx") != std::string::npos);  // names the file
-    const auto warnings = film.scene_warnings(scene);
+    app::EffectOptions thesis_options{effects + "/spectral/cd.fx"};
+    thesis_options.technique = "Thesis";  // the thesis' hard cut: a point light
+    const auto thesis_session = app::open_effect_session(thesis_options);
+    const render::EffectSession& thesis = *thesis_session;
+    CHECK(thesis.unused_light_radius_warning(scene.light).find("cd.fx") != std::string::npos);  // names the file
+    const auto warnings = thesis.scene_warnings(scene);
     REQUIRE(warnings.size() == 1);
     CHECK(warnings.front().find("point") != std::string::npos);
     CHECK(app::open_effect_session(app::EffectOptions{effects + "/spectral/cd.fx"})->scene_warnings(scene).empty());  // Orders, cd.fx's default, reads LIGHTRADIUS
     CHECK(app::open_effect_session(app::EffectOptions{effects + "/spectral/wavelength.fx"})->scene_warnings(scene).empty());  // a sphere lamp
+    CHECK(app::open_effect_session(app::EffectOptions{effects + "/spectral/thinfilm.fx"})->scene_warnings(scene).empty());  // mirrored
     scene.light.radius = 0;
-    CHECK(film.scene_warnings(scene).empty());
+    CHECK(thesis.scene_warnings(scene).empty());
 }

@@ -149,7 +149,7 @@ TEST_CASE("I/O and data failures exit with 1 naming the file") {
 
 TEST_CASE("a sized light is said where a technique draws it as a point, and not where it is drawn") {
     const std::string effects = FXVIEW_SOURCE_EFFECTS_DIR;
-    const Result point = run("render " + effects + "/spectral/thinfilm.fx --light-radius 0.5 --size 16x16 --out " + temp_path("sized.png"));
+    const Result point = run("render " + effects + "/spectral/cd.fx -t Thesis --light-radius 0.5 --size 16x16 --out " + temp_path("sized.png"));
     CHECK(point.exit_code == 0);
     CHECK(point.err.find("treats the light as a point") != std::string::npos);
     const Result orders = run("render " + effects + "/spectral/cd.fx --mesh disc --light-angle 15 --size 16x16 --out " + temp_path("sized.png"));

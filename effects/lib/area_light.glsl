@@ -1,10 +1,12 @@
-// The scene light as a flat disc or rectangle (`--light-shape`): a one-sided Lambertian emitter of
-// uniform radiance that faces the origin and gives there the point light's irradiance. GPU twin of
-// viewer/scene/light_geometry.cpp: the factors that replace the point light's cos θ, (r·v)^p and
-// (n·h)^p (integrals over the light's solid angle), and its radiance along one direction for the
-// CD's diffraction orders. Needs LightPosition (standard.glsl).
+// The scene light's size and shape: a sphere (`--light-radius`), or a flat disc or rectangle
+// (`--light-shape`), a one-sided Lambertian emitter of uniform radiance that faces the origin and
+// gives there the point light's irradiance. GPU twin of viewer/scene/light_geometry.cpp: the factors
+// that replace the point light's cos θ, (r·v)^p and (n·h)^p (integrals over a flat light's solid
+// angle), and the light's radiance along one direction (the CD's diffraction orders, the films'
+// mirror image). Needs LightPosition (standard.glsl).
 #pragma once
 
+uniform float LightRadius : LIGHTRADIUS;     // a sphere's radius (0: a point); a flat light's equivalent
 uniform float LightShape : LIGHTSHAPE;       // 0 a sphere or a point, 1 a disc, 2 a rectangle
 uniform vec2 LightHalfSize : LIGHTHALFSIZE;  // half extents along the light's u and v
 uniform mat3 LightFrame : LIGHTFRAME;        // columns u, v and the emitting side's normal
@@ -120,4 +122,36 @@ float flat_light_radiance(FlatLightView f, vec3 direction, float width, bool dis
     float ramp = clamp(0.5 + angle / width, 0.0, 1.0);
     float ramped = flat_light_offset_integral(f.half_angles, min(0.5 * width, min(f.half_angles.x, f.half_angles.y)), 0.5 * width, disc) / width;
     return ramped > 0.0 ? LightRadiance * ramp * f.sharp / ramped : 0.0;
+}
+
+// The sphere light (cd.fx's orders, the films' mirror image) measured in chords (no inverse
+// trigonometry: its GPU approximations shift a sharp edge visibly), as viewer/optics/grating_orders.hpp: the edge's chord 2 sin(α/2) from sin α, and the
+// radiance at chord c from the centre of a light of unit irradiance at normal incidence, its image
+// softened by a ramp of width w around the edge and divided by the ramp's exact irradiance.
+float light_edge_chord(float sin_alpha) {
+    float s = clamp(sin_alpha, 0.0, 1.0);
+    return s * sqrt(2.0 / (1.0 + sqrt(1.0 - s * s)));
+}
+
+float sphere_light_radiance(float chord, float edge, float width) {
+    float a = edge - 0.5 * width, b = edge + 0.5 * width;
+    if (chord >= b) return 0.0;
+    float profile = clamp((b - chord) / width, 0.0, 1.0);
+    float moment = a >= 0.0 ? a * a / 2.0 - a * a * a * a / 8.0 +
+                                  width * (a / 2.0 + width / 6.0 - a * a * a / 4.0 - a * a * width / 4.0 - a * width * width / 8.0 -
+                                           width * width * width / 40.0)
+                            : (b * b * b / 6.0 - b * b * b * b * b / 40.0) / width;
+    return moment > 0.0 ? profile / (2.0 * 3.14159265358979323846 * moment) : 0.0;
+}
+
+
+// The scene light's radiance (per unit of the effect's light strength) along unit `direction` from
+// `position`, its image blurred by an angle `width`: a sphere's disc, a flat light's outline; 0 for a
+// point, which has no image.
+float scene_light_radiance(vec3 position, vec3 direction, float width) {
+    if (flat_light()) return flat_light_radiance(flat_light_view(position), direction, width, flat_light_is_disc());
+    if (!(LightRadius > 0.0)) return 0.0;
+    vec3 to_light = LightPosition - position;
+    float distance = length(to_light);
+    return sphere_light_radiance(length(direction - to_light / distance), light_edge_chord(LightRadius / distance), max(width, 1e-6));
 }

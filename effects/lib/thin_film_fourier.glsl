@@ -177,11 +177,13 @@ vec4 fourier_film_colour(Film f, vec2 n2) {
     vec3 xyz;
     bool series;
     if (film_under_sky) {
-        // The sky's three tables: observer · 3 + k.
-        series = fourier_film_xyz(f, n2, FilmSkyFourier, SeriesLight(kFourierRowsPerTable * 3 * Observer, 3, film_sky_weights), xyz);
+        // The sky's three tables: observer · 3 + k. A lamp mirrored besides (another spectrum): the exact sum.
+        series = film_lamp <= 0.0 &&
+                 fourier_film_xyz(f, n2, FilmSkyFourier, SeriesLight(kFourierRowsPerTable * 3 * Observer, 3, film_sky_weights), xyz);
     } else {
+        // The lamp's image has the light's own spectrum: it scales the series.
         int row = kFourierRowsPerTable * (Observer * (textureSize(FilmFourier, 0).y / (2 * kFourierRowsPerTable)) + LightSpectrum);
-        series = fourier_film_xyz(f, n2, FilmFourier, SeriesLight(row, 1, vec3(1.0, 0.0, 0.0)), xyz);
+        series = fourier_film_xyz(f, n2, FilmFourier, SeriesLight(row, 1, vec3(1.0 + film_lamp, 0.0, 0.0)), xyz);
     }
     if (!series) xyz = exact_film_xyz(f, n2);
     return vec4(xyz_to_srgb(xyz * Brightness), 1.0);

@@ -34,7 +34,6 @@ uniform float Threshold < string UIName = "Threshold"; float UIMin = 0; float UI
 uniform int Tracks < string UIName = "Illuminated tracks N"; int UIMin = 1; int UIMax = 200; string UIGroup = "Grating";
                      string UIHelp = "Tracks lit coherently (a square patch N tracks wide and as long): more tracks give narrower orders and a smaller mirror highlight. Orders narrower than a pixel are averaged over it, so they stay smooth but dim; raise Brightness to see them"; > = 60;
 
-uniform float LightRadius : LIGHTRADIUS;
 uniform float Reflectance < string UIName = "Coating reflectance"; float UIMin = 0; float UIMax = 1; string UIGroup = "Diffraction orders";
                             string UIHelp = "Of the disc's metal coating: the light all orders together reflect"; > = 0.9;
 uniform float ZeroOrder < string UIName = "Mirror share"; float UIMin = 0; float UIMax = 1; string UIGroup = "Diffraction orders";
@@ -202,26 +201,6 @@ const int kMaxOrder = 32;
 float sinc_squared_weight(int m) {
     float a = PI * float(m) * PitFraction;
     return m == 0 ? 1.0 : pow(sin(a) / a, 2.0);
-}
-
-// The sphere light measured in chords (no inverse trigonometry: its GPU approximations shift a sharp
-// edge visibly), as viewer/optics/grating_orders.hpp: the edge's chord 2 sin(α/2) from sin α, and the
-// radiance at chord c from the centre of a light of unit irradiance at normal incidence, its image
-// softened by a ramp of width w around the edge and divided by the ramp's exact irradiance.
-float light_edge_chord(float sin_alpha) {
-    float s = clamp(sin_alpha, 0.0, 1.0);
-    return s * sqrt(2.0 / (1.0 + sqrt(1.0 - s * s)));
-}
-
-float sphere_light_radiance(float chord, float edge, float width) {
-    float a = edge - 0.5 * width, b = edge + 0.5 * width;
-    if (chord >= b) return 0.0;
-    float profile = clamp((b - chord) / width, 0.0, 1.0);
-    float moment = a >= 0.0 ? a * a / 2.0 - a * a * a * a / 8.0 +
-                                  width * (a / 2.0 + width / 6.0 - a * a * a / 4.0 - a * a * width / 4.0 - a * width * width / 8.0 -
-                                           width * width * width / 40.0)
-                            : (b * b * b / 6.0 - b * b * b * b * b / 40.0) / width;
-    return moment > 0.0 ? profile / (2.0 * PI * moment) : 0.0;
 }
 
 // The scene's lamp through the orders at every sampled nm (into xyz and ybar_sum). `flat_lamp` and

@@ -9,6 +9,7 @@
 #include "spectral.glsl"
 #include "thin_film.glsl"
 #include "environment_spectral.glsl"
+#include "area_light.glsl"
 
 uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
                             string UIHelp = "The light's spectrum (spectra/library.txt; 5 = D65); a scene light spectrum (--light-spectrum, Scene tab) overrides it";
@@ -16,7 +17,7 @@ uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = 
 uniform float Brightness < string UIName = "Brightness"; float UIMin = 0; float UIMax = 8; float UIStep = 0.1; string UIGroup = "Lighting";
                            string UIHelp = "Scales the reflected light: 1 is physical (a perfect mirror under illuminant E gives Y = 1)"; > = 2.0;
 uniform int Incidence < string UIName = "Angle of incidence from"; string UIWidget = "combo"; string UIItems = "view|light"; string UIGroup = "Lighting";
-                        string UIHelp = "view: light arriving from the mirror direction of the eye (a uniform sky of the light spectrum; under --environment sky, the sky seen in that direction); light: the angle to the point light"; > = 0;
+                        string UIHelp = "view: light arriving from the mirror direction of the eye (a uniform sky of the light spectrum; under --environment sky, the sky seen in that direction), and a sized scene light mirrored; light: the angle to the point light"; > = 0;
 
 uniform float OuterIndex < string UIName = "Outer medium n0"; float UIMin = 1; float UIMax = 2.5; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 1; > = 1.0;
 uniform float FilmIndex < string UIName = "Film n1"; float UIMin = 1; float UIMax = 3; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 2;
@@ -51,8 +52,18 @@ struct Film {
 // spectral weights film_at() finds once per fragment and keeps here.
 bool film_under_sky = false;
 vec3 film_sky_weights = vec3(0.0);
+// With Incidence = view the film also mirrors a sized scene light (a sphere, disc or rectangle;
+// area_light.glsl): its radiance in the mirror direction, over the uniform sky's (π x the lamp's,
+// whose irradiance is the sky's at 1), added to the light spectrum. `film_footprint` carries the
+// image's blur (how far the mirror direction turns across the pixel) to the CPU reference.
+float film_lamp = 0.0;
+vec4 film_footprint = vec4(0.0);
 
-Film film_at(vec3 position, vec3 normal, vec2 uv) {
+// The eye's mirror direction about `normal`.
+vec3 mirror_of_eye(vec3 position, vec3 normal) { return reflect(-normalize(CameraPosition - position), normalize(normal)); }
+
+// `blur`: how far the mirror direction turns across the pixel (fx_pixel_turn of mirror_of_eye).
+Film film_at(vec3 position, vec3 normal, vec2 uv, float blur) {
     vec3 n = normalize(normal);
     vec3 v = normalize(CameraPosition - position);
     Film f;
@@ -62,12 +73,18 @@ Film film_at(vec3 position, vec3 normal, vec2 uv) {
     vec2 centred = 2.0 * uv - 1.0;
     f.thickness = Thickness + Variation * max(1.0 - dot(centred, centred), 0.0);
     film_under_sky = Incidence == 0 && spectral_environment();
-    if (film_under_sky) film_sky_weights = spectral_environment_weights(reflect(-v, n));
+    vec3 mirror = reflect(-v, n);
+    if (film_under_sky) film_sky_weights = spectral_environment_weights(mirror);
+    film_lamp = Incidence == 0 ? 3.14159265358979323846 * scene_light_radiance(position, mirror, blur) : 0.0;
+    film_footprint = vec4(blur, 0.0, 0.0, 0.0);
     return f;
 }
 
-// The light at `nm`: the light spectrum, or the sky seen in the mirror direction.
-float light_at(int nm) { return film_under_sky ? spectral_environment_radiance(film_sky_weights, nm) : spectrum_at(LightSpectrum, nm); }
+// The light at `nm`: the light spectrum, or the sky seen in the mirror direction; and the lamp's image.
+float light_at(int nm) {
+    float lamp = film_lamp * spectrum_at(LightSpectrum, nm);
+    return (film_under_sky ? spectral_environment_radiance(film_sky_weights, nm) : spectrum_at(LightSpectrum, nm)) + lamp;
+}
 
 // One wavelength's reflected light, weighted by the CMFs; ybar_sum collects k's denominator.
 void add_sample(inout vec3 xyz, inout float ybar_sum, int nm, float reflectance) {
@@ -84,7 +101,7 @@ GLSLShader PathDifferenceFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
+        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
         float cos_beta = refracted_cos(OuterIndex, FilmIndex, f.cos_light);
         float cos_eye = f.cos_view * 0.1 + 0.9;
         vec3 xyz = vec3(0.0);
@@ -93,6 +110,7 @@ GLSLShader PathDifferenceFS {
             add_sample(xyz, ybar_sum, nm, fract(2.0 * f.thickness * FilmIndex * cos_beta * cos_eye / float(nm)));
         color = film_colour(xyz, ybar_sum);
         fx_capture();
+        fx_capture_footprint = film_footprint;
     }
 }
 
@@ -118,13 +136,14 @@ GLSLShader FresnelFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
+        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
         for (int nm = Lower; nm <= Upper; nm += max(Steps, 1))
             add_sample(xyz, ybar_sum, nm, durikovic(f.cos0, f.thickness, float(nm)));
         color = film_colour(xyz, ybar_sum);
         fx_capture();
+        fx_capture_footprint = film_footprint;
     }
 }
 
@@ -134,7 +153,7 @@ GLSLShader FresnelFasterFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
+        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
         float cos1 = refracted_cos(OuterIndex, FilmIndex, f.cos0);
         float cos2 = refracted_cos(OuterIndex, SubstrateIndex, f.cos0);
         vec2 r10 = fresnel_combined(cos1, f.cos0, FilmIndex, OuterIndex);
@@ -150,6 +169,7 @@ GLSLShader FresnelFasterFS {
         }
         color = film_colour(xyz, ybar_sum);
         fx_capture();
+        fx_capture_footprint = film_footprint;
     }
 }
 
@@ -159,7 +179,7 @@ GLSLShader FresnelAlternativeFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
+        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
         float cos1 = refracted_cos(OuterIndex, FilmIndex, f.cos0);
         float cos2 = refracted_cos(OuterIndex, SubstrateIndex, f.cos0);
         // Eq. 64's path in the film minus the path outside, 2dn1/cos1 - 2dn0 tan1 sin0, is by Snell
@@ -182,6 +202,7 @@ GLSLShader FresnelAlternativeFS {
         }
         color = film_colour(xyz, ybar_sum);
         fx_capture();
+        fx_capture_footprint = film_footprint;
     }
 }
 
@@ -208,8 +229,9 @@ GLSLShader FresnelExactFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        color = fresnel_exact_colour(film_at(fs_in.world_position, fs_in.normal, fs_in.uv));
+        color = fresnel_exact_colour(film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal))));
         fx_capture();
+        fx_capture_footprint = film_footprint;
     }
 }
 
@@ -236,10 +258,12 @@ GLSLShader BumpFresnelExactFS {
         vec2 phase = kTwoPi * fract(WaveFrequency * fs_in.uv);
         float height = WaveAmplitude * sin(phase.x) * sin(phase.y);
         vec2 slope = WaveAmplitude * w * vec2(cos(phase.x) * sin(phase.y), sin(phase.x) * cos(phase.y));
-        Film f = film_at(fs_in.world_position, -slope.x * t - slope.y * b + n, fs_in.uv);
+        vec3 tilted = -slope.x * t - slope.y * b + n;
+        Film f = film_at(fs_in.world_position, tilted, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, tilted)));
         f.thickness = max(f.thickness + WaveThickness * height, 0.0);
         color = fresnel_exact_colour(f);
         fx_capture();
+        fx_capture_footprint = film_footprint;
     }
 }
 
@@ -255,7 +279,7 @@ GLSLShader BubbleFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
+        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
         float ratio = OuterIndex / FilmIndex;
         // cos²θ1 without the cancellation of 1 - sin² near grazing incidence (see refracted_cos).
         float cos1_squared = (1.0 - ratio * ratio) + ratio * ratio * f.cos0 * f.cos0;
@@ -289,6 +313,7 @@ GLSLShader BubbleFS {
         }
         color = film_colour(xyz, ybar_sum);
         fx_capture();
+        fx_capture_footprint = film_footprint;
     }
 }
 
@@ -298,7 +323,7 @@ GLSLShader FabryPerotFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
+        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
         float cos1 = refracted_cos(OuterIndex, FilmIndex, f.cos0);
         vec2 r = abs(fresnel_combined(f.cos0, cos1, OuterIndex, FilmIndex));
         float mirror = 0.5 * (r.x + r.y);
@@ -314,6 +339,7 @@ GLSLShader FabryPerotFS {
         }
         color = film_colour(xyz, ybar_sum);
         fx_capture();
+        fx_capture_footprint = film_footprint;
     }
 }
 
@@ -356,13 +382,14 @@ GLSLShader MultiLayerFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
+        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
         for (int nm = Lower; nm <= Upper; nm += max(Steps, 1))
             add_sample(xyz, ybar_sum, nm, multilayer(f.cos0, f.thickness, float(nm)));
         color = film_colour(xyz, ybar_sum);
         fx_capture();
+        fx_capture_footprint = film_footprint;
     }
 }
 
@@ -373,7 +400,7 @@ GLSLShader MultiLayerFasterFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv);
+        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
         int count = clamp(Layers, 1, 16);
         vec2 n0 = vec2(OuterIndex, 0.0), na = layer_index(1), nb = layer_index(2), ns = vec2(SubstrateIndex, SubstrateKappa);
         vec2 cos0 = vec2(f.cos0, 0.0), cos_a = refracted_cos_c(OuterIndex, na, f.cos0), cos_b = refracted_cos_c(OuterIndex, nb, f.cos0);
@@ -400,6 +427,7 @@ GLSLShader MultiLayerFasterFS {
         }
         color = film_colour(xyz, ybar_sum);
         fx_capture();
+        fx_capture_footprint = film_footprint;
     }
 }
 
@@ -410,8 +438,9 @@ GLSLShader FresnelFourierFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        color = fourier_film_colour(film_at(fs_in.world_position, fs_in.normal, fs_in.uv), vec2(SubstrateIndex, SubstrateKappa));
+        color = fourier_film_colour(film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal))), vec2(SubstrateIndex, SubstrateKappa));
         fx_capture();
+        fx_capture_footprint = film_footprint;
     }
 }
 
@@ -420,8 +449,9 @@ GLSLShader BubbleFourierFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        color = fourier_film_colour(film_at(fs_in.world_position, fs_in.normal, fs_in.uv), vec2(OuterIndex, 0.0));
+        color = fourier_film_colour(film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal))), vec2(OuterIndex, 0.0));
         fx_capture();
+        fx_capture_footprint = film_footprint;
     }
 }
 

@@ -27,7 +27,6 @@ uniform float Power < string UIName = "Specular power"; float UIMin = 1; float U
 uniform bool Metal < string UIName = "Metal"; string UIGroup = "Lighting";
                      string UIHelp = "On: a metal, whose highlight takes the object's colour; off: a dielectric, whose highlight takes the light's colour"; > = false;
 
-uniform float LightRadius : LIGHTRADIUS;  // the scene's lamp as a sphere (`--light-radius`); 0: a point; flat lights: area_light.glsl
 
 struct Geometry { float lambert; float phong; float blinn; };
 

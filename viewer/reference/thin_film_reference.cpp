@@ -19,6 +19,7 @@
 #include "optics/thin_film.hpp"
 #include "reference/environment_reference.hpp"
 #include "reference/film_fourier.hpp"
+#include "reference/lamp_image.hpp"
 #include "reference/spectral_integration.hpp"
 
 namespace fxview::reference {
@@ -34,11 +35,16 @@ struct Film {
     // the mirror direction of the eye, which light the film instead of the light spectrum.
     std::optional<glm::dvec3> sky;
     std::optional<EnvironmentLookup> environment;
+    // With Incidence = view: a sized scene light's image in the mirror direction, over the uniform
+    // sky's radiance (π x its radiance per unit light strength), added to the light spectrum.
+    double lamp = 0;
 };
 
-// The light at `nm`: the light spectrum, or the sky seen in the mirror direction (thinfilm.fx light_at).
+// The light at `nm`: the light spectrum, or the sky seen in the mirror direction, and the lamp's
+// image (thinfilm.fx light_at).
 double light_at(const Film& f, const SpectralSetup& s, int light, int nm) {
-    return f.sky ? f.environment->spectral_radiance(*f.sky, nm) : spectral::packed_value(*s.spectra, light, nm);
+    const double spectrum = spectral::packed_value(*s.spectra, light, nm);
+    return (f.sky ? f.environment->spectral_radiance(*f.sky, nm) : spectrum) + f.lamp * spectrum;
 }
 
 Film film(const ShadingInput& in, const ReferenceContext& c) {
@@ -52,10 +58,11 @@ Film film(const ShadingInput& in, const ReferenceContext& c) {
     f.cos_view = std::clamp(glm::dot(n, glm::normalize(in.camera - in.position)), 0.0, 1.0);
     f.cos0 = c.number("Incidence") == 1.0 ? f.cos_light : f.cos_view;
     f.environment = EnvironmentLookup::from(c);
-    if (c.number("Incidence") == 0.0 && f.environment && f.environment->spectral() && c.environment->intensity > 0) {
-        const glm::dvec3 v = glm::normalize(in.camera - in.position);
-        f.sky = f.environment->spectral_weights(2.0 * glm::dot(n, v) * n - v);
-    }
+    const glm::dvec3 v = glm::normalize(in.camera - in.position), mirror = 2.0 * glm::dot(n, v) * n - v;
+    if (c.number("Incidence") == 0.0 && f.environment && f.environment->spectral() && c.environment->intensity > 0)
+        f.sky = f.environment->spectral_weights(mirror);
+    // The GPU's blur of the image (how far the mirror direction turns across the pixel), as captured.
+    if (c.number("Incidence") == 0.0) f.lamp = std::numbers::pi * scene_light_radiance(in, mirror, in.footprint.x);
     // An inverted paraboloid over the texture square, peaking at its centre (fig. 27).
     const glm::dvec2 centred = 2.0 * in.uv - 1.0;
     f.thickness = c.number("Thickness") + c.number("Variation") * std::max(1.0 - glm::dot(centred, centred), 0.0);
@@ -250,9 +257,13 @@ std::array<double, 4> fourier_colour(const Film& f, const ReferenceContext& c, o
     technique.weight_p = polarisation == 1 ? 0.0 : 1.0 - technique.weight_s;
     const reference::SingleFilm film{f.n0, f.n1, substrate, f.thickness, f.cos0, c.number("ThicknessSpread")};
     // Under the sky: the weighted series of its three spectra (environment:fourier), as on the GPU.
-    const auto series = f.sky ? film_xyz_fourier_table(*f.environment->spectral_fourier(), setup.observer,
-                                                       TableLight{0, 3, {f.sky->x, f.sky->y, f.sky->z}}, film, technique)
-                              : film_xyz_fourier_table(c.generated("FilmFourier"), setup.observer, light, film, technique);
+    // A lamp's image besides the sky (another spectrum): the exact sum; without the sky it has the
+    // light's own spectrum and scales the series.
+    const auto series = f.sky ? (f.lamp > 0 ? std::nullopt
+                                            : film_xyz_fourier_table(*f.environment->spectral_fourier(), setup.observer,
+                                                                     TableLight{0, 3, {f.sky->x, f.sky->y, f.sky->z}}, film, technique))
+                              : film_xyz_fourier_table(c.generated("FilmFourier"), setup.observer, TableLight{light, 1, {1.0 + f.lamp, 0.0, 0.0}},
+                                                       film, technique);
     if (series) {
         spectral::Vec3 xyz = *series;
         for (double& v : xyz) v *= setup.brightness;
@@ -326,7 +337,8 @@ Reference with_sky_truth(Reference r, StackAt stack_at_nm, bool spread_thickness
         const SpectralSetup setup = spectral_setup(c), every_nm = every_nm_setup(c);
         const int light = static_cast<int>(c.number("LightSpectrum"));
         return to_rgba(integrate(every_nm, true, [&](int nm) {
-            const double radiance = f.sky ? f.environment->exact_spectral_radiance(weights, nm) : light_at(f, setup, light, nm);
+            const double radiance = f.sky ? f.environment->exact_spectral_radiance(weights, nm) + f.lamp * spectral::packed_value(*setup.spectra, light, nm)
+                                          : light_at(f, setup, light, nm);
             return radiance * (spread > 0.0 ? spread_reflectance(f, spread, nm, stack_at_nm)
                                             : optics::transfer_matrix_reflectance(stack_at_nm(f, nm), nm, f.cos0));
         }), every_nm.mapping);
