@@ -244,7 +244,14 @@ effect::ParameterValues EffectSession::values_for(const scene::Scene& scene) con
         effect::set_value_from_text(*loaded_->effect, values, p.name + "=" + scene.light.spectrum);
     }
     if (!scene.light.intensity) return values;
-    const double lux = scene::illuminance_at_origin(scene.light, *scene.light.intensity);
+    double lux = 0;
+    try {
+        lux = scene::illuminance_at_origin(scene.light, *scene.light.intensity);
+    } catch (const UsageError&) {
+        // A unit the light cannot have (a point in nit): the CLI refuses it before, the viewer's Scene
+        // tab says so under the field; the picture keeps the effect's own strength meanwhile.
+        return values;
+    }
     for (const effect::Parameter& p : loaded_->effect->parameters) {
         const std::string role = scene_light_role(p);
         if (role == "irradiance") {

@@ -163,7 +163,10 @@ void draw_light_shape(scene::Light& light, glm::vec3 position, const std::string
             scene::Light probe = light;
             probe.pose.position = position;  // the world position, as the renderer sees it
             probe.pose.rotation = glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
-            ImGui::TextDisabled("%.1f lx at the origin", scene::illuminance_at_origin(probe, *light.intensity));
+            const double lux = scene::illuminance_at_origin(probe, *light.intensity);
+            // A white Lambertian surface facing it shows E / π cd/m²; the exposure that puts it at 0.8.
+            ImGui::TextDisabled("%.1f lx at the origin: a white surface facing it shows %.1f cd/m2\n(exposure %.1f EV, View tab, shows it at 0.8)",
+                                lux, lux / 3.14159265358979, lux > 0 ? std::log2(0.8 * 3.14159265358979 / lux) : 0.0);
         } catch (const std::exception& error) {
             ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", error.what());
         }
