@@ -142,7 +142,10 @@ bool fourier_film_xyz(Film f, vec2 n2, sampler2D table, SeriesLight light, out v
     float brightest = max(white.x, max(white.y, white.z));
     if (!(brightest > 0.0)) return true;  // no light (a black direction of the sky): black
     float path = 2.0 * FilmIndex * f.thickness * cos1;
-    float path_spread = 2.0 * FilmIndex * ThicknessSpread * cos1;  // term m: m D spread by m path_spread
+    // Term m: m D spread by m path_spread, from the thicknesses' spread and a rough film's spread of
+    // angles (dcos θ1 / dcos θ0 = (n0/n1)² cos θ0 / cos θ1 by Snell), taken as independent.
+    float angle_spread = ratio * ratio * f.cos0 / cos1 * f.cos0_spread;
+    float path_spread = 2.0 * FilmIndex * sqrt(ThicknessSpread * ThicknessSpread * cos1 * cos1 + f.thickness * f.thickness * angle_spread * angle_spread);
     // What SeriesOrder terms leave out, relative to the light, is at most
     // 2 |C_{order+1}| / (1 − |x|) · (the largest |F| from (order+1) D on). Past kSeriesTailLimit (thin
     // films near grazing incidence, |x| -> 1) the exact sum serves instead.

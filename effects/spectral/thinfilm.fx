@@ -8,7 +8,7 @@
 #include "standard.glsl"
 #include "spectral.glsl"
 #include "thin_film.glsl"
-#include "environment_spectral.glsl"
+#include "environment_spectral_lobes.glsl"
 #include "area_light.glsl"
 
 uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
@@ -30,6 +30,9 @@ uniform float Thickness < string UIName = "Thickness"; float UIMin = 0; float UI
 uniform float Variation < string UIName = "Variation"; float UIMin = 0; float UIMax = 2000; float UIStep = 1; string UIUnits = "nm"; string UIGroup = "Film"; int UIOrder = 6;
                           string UIHelp = "Height of the inverted paraboloid, in texture coordinates, added to the base thickness"; > = 300.0;
 
+uniform float Roughness < string UIName = "Roughness"; float UIMin = 0; float UIMax = 1; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 7;
+                          string UIHelp = "A rough film (microfacet width α = Roughness²): it mirrors the environment and a sized light through a glossy lobe, its colour taken at the lobe's mean half-vector angle (the Fourier films also damp by its spread of angles); 0: a smooth film. An approximation: under the sky about 0.2 CIEDE2000 from the lobe's integral at 0.2, 2 at 0.4, 6 at 0.7"; > = 0.0;
+
 uniform int Layers < string UIName = "Layers"; int UIMin = 1; int UIMax = 16; string UIGroup = "Stack"; int UIOrder = 1;
                      string UIHelp = "Films on the substrate, alternating A (n1, varying thickness) and B from the top"; > = 4;
 uniform float SecondIndex < string UIName = "Layer B n"; float UIMin = 1; float UIMax = 3; float UIStep = 0.01; string UIGroup = "Stack"; int UIOrder = 2; > = 2.0;
@@ -44,6 +47,7 @@ uniform float SecondThickness < string UIName = "Layer B thickness"; float UIMin
 struct Film {
     float cos_light, cos_view;
     float cos0;       // cos θ0 in the outer medium, by Incidence
+    float cos0_spread;  // its standard deviation over a rough film's lobe (0: smooth)
     float thickness;  // nm, at this fragment
 };
 
@@ -62,6 +66,8 @@ vec4 film_footprint = vec4(0.0);
 // The eye's mirror direction about `normal`.
 vec3 mirror_of_eye(vec3 position, vec3 normal) { return reflect(-normalize(CameraPosition - position), normalize(normal)); }
 
+#include "film_roughness.glsl"  // a rough film's lobe and what it sees of the environment
+
 // `blur`: how far the mirror direction turns across the pixel (fx_pixel_turn of mirror_of_eye).
 Film film_at(vec3 position, vec3 normal, vec2 uv, float blur) {
     vec3 n = normalize(normal);
@@ -69,12 +75,17 @@ Film film_at(vec3 position, vec3 normal, vec2 uv, float blur) {
     Film f;
     f.cos_light = clamp(dot(n, normalize(LightPosition - position)), 0.0, 1.0);
     f.cos_view = clamp(dot(n, v), 0.0, 1.0);
-    f.cos0 = Incidence == 1 ? f.cos_light : f.cos_view;
+    vec2 seen = Incidence == 0 && Roughness > 0.0 ? film_rough_cosine(n, v, film_lobe_power()) : vec2(f.cos_view, 0.0);
+    f.cos0 = Incidence == 1 ? f.cos_light : seen.x;
+    f.cos0_spread = Incidence == 1 ? 0.0 : seen.y;
     vec2 centred = 2.0 * uv - 1.0;
     f.thickness = Thickness + Variation * max(1.0 - dot(centred, centred), 0.0);
     film_under_sky = Incidence == 0 && spectral_environment();
     vec3 mirror = reflect(-v, n);
-    if (film_under_sky) film_sky_weights = spectral_environment_weights(mirror);
+    bool rough = Roughness > 0.0;
+    if (film_under_sky) film_sky_weights = rough ? film_rough_weights(n, v, film_lobe_power()) : spectral_environment_weights(mirror);
+    // A rough film spreads a lamp's image over the lobe's width, 2 / √p (the ramp keeps its energy).
+    if (rough) blur += 2.0 / sqrt(film_lobe_power());
     film_lamp = Incidence == 0 ? 3.14159265358979323846 * scene_light_radiance(position, mirror, blur) : 0.0;
     film_footprint = vec4(blur, 0.0, 0.0, 0.0);
     return f;

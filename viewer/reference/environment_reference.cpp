@@ -175,6 +175,14 @@ glm::dvec3 EnvironmentLookup::spectral_highlight(const glm::dvec3& n, const glm:
     return sum * scale + discs / kPi * intensity_;
 }
 
+glm::dvec3 EnvironmentLookup::spectral_lobe_mean(const glm::dvec3& n, const glm::dvec3& v, double power, double* seam) const {
+    const double mass = maps_->lobe_mass().lookup(glm::dot(n, v), lighting::lobe_mass_row(power)).x * lighting::lobe_mass_unit(power);
+    if (!(mass > 0.0)) return glm::dvec3(0.0);
+    const glm::dvec3 highlight = spectral_highlight(n, v, false, power, seam);
+    if (seam) *seam /= mass;
+    return highlight / mass;
+}
+
 void EnvironmentLookup::visit_exact_integral(const std::function<double(const glm::dvec3&)>& g, const Draw& draw, int samples, unsigned seed,
                                              const std::function<void(double factor, const glm::dvec3& l)>& add) const {
     const glm::dmat3 to_world = glm::transpose(rotation_);

@@ -41,6 +41,9 @@ public:
     // the spread at cube corners and the footprints' spread over 256 (sub-texel precision).
     glm::dvec3 spectral_irradiance(const glm::dvec3& n, double* seam = nullptr) const;
     glm::dvec3 spectral_highlight(const glm::dvec3& n, const glm::dvec3& v, bool blinn, double power, double* seam = nullptr) const;
+    // The weights averaged under a Phong lobe of `power` about the mirror direction of v: the
+    // highlight over the lobe's mass above the surface (effects/lib/film_roughness.glsl, a rough film).
+    glm::dvec3 spectral_lobe_mean(const glm::dvec3& n, const glm::dvec3& v, double power, double* seam = nullptr) const;
     // Ground truth of (1/π) ∫ g(l) w(l) dl over the model's exact weights: `samples` directions drawn by
     // `draw` (a direction and its density for a point of the unit square; a Hammersley set turned by
     // `seed`), none inside a disc light, each disc by its 512-point quadrature.
@@ -67,12 +70,14 @@ public:
     template <typename Brdf>
     glm::dvec3 integral(const brdf::Directions& d, const Brdf& f, double alpha, int samples, unsigned seed) const;
 
-private:
-    const render::EnvironmentMaps* maps_ = nullptr;
     // exact_spectral_integral's directions: `add(factor, l)` for each, factor = g / density / samples / π
-    // (each disc's points by their share of its solid angle).
+    // (each disc's points by their share of its solid angle); for integrands that vary with the
+    // wavelength differently per direction (a rough film's reflectance at each half vector).
     void visit_exact_integral(const std::function<double(const glm::dvec3&)>& g, const Draw& draw, int samples, unsigned seed,
                               const std::function<void(double factor, const glm::dvec3& l)>& add) const;
+
+private:
+    const render::EnvironmentMaps* maps_ = nullptr;
     glm::dvec3 unfiltered(const glm::dvec3& world) const;  // bilinear in the radiance without discs
     // Each disc light through f by its 512-point quadrature (the ground truth).
     glm::dvec3 discs(const brdf::Directions& d, const std::function<glm::dvec3(const glm::dvec3&)>& f) const;

@@ -42,7 +42,9 @@ std::optional<spectral::Vec3> film_xyz_fourier_table(const spectral::PackedTextu
         return std::pair{technique.weight_s * s.c[static_cast<size_t>(m)], technique.weight_p * p.c[static_cast<size_t>(m)]};
     };
     const double path = 2.0 * film.index * film.thickness_nm * s.cos_film;
-    const double path_spread = 2.0 * film.index * film.thickness_spread_nm * s.cos_film;
+    // The thicknesses' spread and a rough film's spread of angles (Snell: dcos θ1 / dcos θ0 = (n0/n1)² cos θ0 / cos θ1), independent.
+    const double angle_spread = ratio * ratio * film.cos_outer / s.cos_film * film.cos_outer_spread;
+    const double path_spread = 2.0 * film.index * std::sqrt(std::pow(film.thickness_spread_nm * s.cos_film, 2) + std::pow(film.thickness_nm * angle_spread, 2));
     const auto lookup = [&](double path_difference, double spread = 0.0) {
         spectral::ComplexXyz sum{};
         for (int k = 0; k < light.count; ++k) {

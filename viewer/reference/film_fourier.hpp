@@ -20,6 +20,8 @@ struct SingleFilm {
     // The standard deviation of a Gaussian spread of thicknesses about thickness_nm (a film that varies
     // within a pixel): the series' terms averaged over it (film_xyz_fourier_table); 0 for none.
     double thickness_spread_nm = 0.0;
+    // The standard deviation of cos_outer over a rough film's lobe: a spread of path differences too.
+    double cos_outer_spread = 0.0;
 };
 
 spectral::Vec3 film_xyz_fourier(const spectral::SensitivityTransform& transform, const SingleFilm& film, int order);

@@ -20,7 +20,10 @@
 #include "reference/environment_reference.hpp"
 #include "reference/film_fourier.hpp"
 #include "reference/lamp_image.hpp"
+#include "reference/rough_film_truth.hpp"
 #include "reference/spectral_integration.hpp"
+#include "reference/tangent_frame.hpp"
+#include "lighting/image_based_lighting.hpp"
 
 namespace fxview::reference {
 namespace {
@@ -28,6 +31,7 @@ namespace {
 struct Film {
     double n0, n1, n2, kappa;
     double cos_light, cos_view, cos0;
+    double cos0_spread;  // cos0's standard deviation over a rough film's lobe (0: smooth)
     double thickness;  // nm at this pixel (layer A of a stack)
     optics::Stack stack;
     double dispersion_a, dispersion_b;  // Cauchy B of layers A and B (nm²), MultiLayer only
@@ -38,7 +42,38 @@ struct Film {
     // With Incidence = view: a sized scene light's image in the mirror direction, over the uniform
     // sky's radiance (π x its radiance per unit light strength), added to the light spectrum.
     double lamp = 0;
+    double roughness = 0;  // Roughness: the environment seen through a Phong lobe (film_roughness.glsl)
+    // How far GL's filtering leaves a rough film's sky weights open (cube corners, sub-texel precision).
+    double sky_seam = 0;
 };
+
+// film_roughness.glsl's lobe: Phong of p = (1/α² − 1)/2 for α = roughness², within [1, 1e5].
+double film_lobe_power(double roughness) {
+    const double alpha = std::max(roughness * roughness, 1e-3);
+    return std::clamp((1.0 / (alpha * alpha) - 1.0) / 2.0, 1.0, 1e5);
+}
+
+// film_roughness.glsl's film_rough_cosine: the mean and standard deviation of v·h over 32 of the lobe's
+// directions above the surface.
+glm::dvec2 film_rough_cosine(const glm::dvec3& n, const glm::dvec3& v, double power) {
+    const glm::dvec3 r = 2.0 * glm::dot(n, v) * n - v;
+    glm::dvec3 x, y;
+    duff_frame(r, x, y);
+    double sum = 0.0, squares = 0.0, count = 0.0;
+    for (unsigned i = 0; i < 32; ++i) {
+        const glm::dvec2 u = lighting::hammersley(i, 32);
+        const double c = std::pow(1.0 - u.x, 1.0 / (power + 1.0)), sine = std::sqrt(std::max(0.0, 1.0 - c * c)), phi = 2.0 * std::numbers::pi * u.y;
+        const glm::dvec3 l = sine * std::cos(phi) * x + sine * std::sin(phi) * y + c * r;
+        if (glm::dot(n, l) <= 0.0) continue;
+        const double c_h = std::clamp(glm::dot(v, glm::normalize(v + l)), 0.0, 1.0);
+        sum += c_h;
+        squares += c_h * c_h;
+        count += 1.0;
+    }
+    if (!(count > 0.0)) return {std::clamp(glm::dot(n, v), 0.0, 1.0), 0.0};
+    const double mean = sum / count;
+    return {mean, std::sqrt(std::max(squares / count - mean * mean, 0.0))};
+}
 
 // The light at `nm`: the light spectrum, or the sky seen in the mirror direction, and the lamp's
 // image (thinfilm.fx light_at).
@@ -56,11 +91,16 @@ Film film(const ShadingInput& in, const ReferenceContext& c) {
     const glm::dvec3 n = glm::normalize(in.normal);
     f.cos_light = std::clamp(glm::dot(n, glm::normalize(in.light - in.position)), 0.0, 1.0);
     f.cos_view = std::clamp(glm::dot(n, glm::normalize(in.camera - in.position)), 0.0, 1.0);
-    f.cos0 = c.number("Incidence") == 1.0 ? f.cos_light : f.cos_view;
-    f.environment = EnvironmentLookup::from(c);
+    f.roughness = c.values.numbers.count("Roughness") ? c.number("Roughness") : 0.0;  // the thesis' own listings have none
     const glm::dvec3 v = glm::normalize(in.camera - in.position), mirror = 2.0 * glm::dot(n, v) * n - v;
+    const bool view = c.number("Incidence") == 0.0;
+    const glm::dvec2 seen = view && f.roughness > 0 ? film_rough_cosine(n, v, film_lobe_power(f.roughness)) : glm::dvec2(f.cos_view, 0.0);
+    f.cos0 = view ? seen.x : f.cos_light;
+    f.cos0_spread = view ? seen.y : 0.0;
+    f.environment = EnvironmentLookup::from(c);
     if (c.number("Incidence") == 0.0 && f.environment && f.environment->spectral() && c.environment->intensity > 0)
-        f.sky = f.environment->spectral_weights(mirror);
+        f.sky = f.roughness > 0 ? f.environment->spectral_lobe_mean(n, v, film_lobe_power(f.roughness), &f.sky_seam)
+                                : f.environment->spectral_weights(mirror);
     // The GPU's blur of the image (how far the mirror direction turns across the pixel), as captured.
     if (c.number("Incidence") == 0.0) f.lamp = std::numbers::pi * scene_light_radiance(in, mirror, in.footprint.x);
     // An inverted paraboloid over the texture square, peaking at its centre (fig. 27).
@@ -177,6 +217,11 @@ double phase_sensitivity(const Film& at, const FilmColour& colour) {
         Film turned = at;
         for (double* cosine : {&turned.cos0, &turned.cos_light, &turned.cos_view}) *cosine = std::clamp(*cosine + sign * 5e-7, 0.0, 1.0);
         compare(turned);
+        if (at.sky && at.sky_seam > 0) {  // a rough film's filtered sky weights, as open as GL leaves them
+            Film filtered = at;
+            *filtered.sky += sign * at.sky_seam;
+            compare(filtered);
+        }
     }
     return change;
 }
@@ -255,7 +300,7 @@ std::array<double, 4> fourier_colour(const Film& f, const ReferenceContext& c, o
     technique.order = static_cast<int>(c.number("SeriesOrder"));
     technique.weight_s = polarisation == 2 ? 0.0 : polarisation == 1 ? 1.0 : 0.5;
     technique.weight_p = polarisation == 1 ? 0.0 : 1.0 - technique.weight_s;
-    const reference::SingleFilm film{f.n0, f.n1, substrate, f.thickness, f.cos0, c.number("ThicknessSpread")};
+    const reference::SingleFilm film{f.n0, f.n1, substrate, f.thickness, f.cos0, c.number("ThicknessSpread"), f.cos0_spread};
     // Under the sky: the weighted series of its three spectra (environment:fourier), as on the GPU.
     // A lamp's image besides the sky (another spectrum): the exact sum; without the sky it has the
     // light's own spectrum and scales the series.
@@ -328,7 +373,7 @@ double spread_reflectance(const Film& f, double spread, int nm, const StackAt& s
 // `spread_thickness`: the technique reads ThicknessSpread (the Fourier films): the truth averages the
 // film over it, under the environment and under the light spectrum alike.
 Reference with_sky_truth(Reference r, StackAt stack_at_nm, bool spread_thickness = false) {
-    r.truth = [shade = r.shade, stack_at_nm, spread_thickness](const ShadingInput& in, const ReferenceContext& c, unsigned) {
+    r.truth = [shade = r.shade, stack_at_nm, spread_thickness](const ShadingInput& in, const ReferenceContext& c, unsigned seed) {
         const Film f = film(in, c);
         const double spread = spread_thickness ? c.number("ThicknessSpread") : 0.0;
         if (!f.sky && !(spread > 0.0)) return shade(in, c);  // lit by the light spectrum: nothing the reference approximates
@@ -336,6 +381,19 @@ Reference with_sky_truth(Reference r, StackAt stack_at_nm, bool spread_thickness
         const glm::dvec3 weights = f.sky ? f.environment->exact_spectral_weights(2.0 * glm::dot(n, v) * n - v) : glm::dvec3(0.0);
         const SpectralSetup setup = spectral_setup(c), every_nm = every_nm_setup(c);
         const int light = static_cast<int>(c.number("LightSpectrum"));
+        const auto film_at_angle = [&](double cos0, int nm) {
+            Film g = f;
+            g.cos0 = cos0;
+            return spread > 0.0 ? spread_reflectance(g, spread, nm, stack_at_nm) : optics::transfer_matrix_reflectance(stack_at_nm(g, nm), nm, cos0);
+        };
+        if (f.sky && f.roughness > 0.0) {
+            // A rough film: the lobe's integral with the film at each direction's half vector, and the lamp's image.
+            const std::vector<double> rough = rough_film_radiance(*f.environment, n, v, film_lobe_power(f.roughness), film_at_angle, seed);
+            return to_rgba(integrate(every_nm, true, [&](int nm) {
+                return rough[static_cast<size_t>(nm - lighting::SpectralForm::kFirstNm)] +
+                       f.lamp * spectral::packed_value(*setup.spectra, light, nm) * film_at_angle(f.cos0, nm);
+            }), every_nm.mapping);
+        }
         return to_rgba(integrate(every_nm, true, [&](int nm) {
             const double radiance = f.sky ? f.environment->exact_spectral_radiance(weights, nm) + f.lamp * spectral::packed_value(*setup.spectra, light, nm)
                                           : light_at(f, setup, light, nm);
@@ -345,8 +403,10 @@ Reference with_sky_truth(Reference r, StackAt stack_at_nm, bool spread_thickness
     };
     if (spread_thickness) r.truth_wanted = [](const ReferenceContext& c) { return c.number("ThicknessSpread") > 0.0; };
     r.truth_method = spread_thickness ? "the exact film mirroring the environment's model or lit by the light spectrum, averaged over its spread of "
-                                        "thicknesses (an image: each direction's own uplifted spectrum; 1 nm, characteristic matrices, Simpson over ±6σ)"
-                                      : "the exact film mirroring the environment's model (an image: each direction's own uplifted spectrum; 1 nm, characteristic matrices)";
+                                        "thicknesses (an image: each direction's own uplifted spectrum; 1 nm, characteristic matrices, Simpson over ±6σ; "
+                                        "rough: over its lobe, 1024 directions, the film at each half vector)"
+                                      : "the exact film mirroring the environment's model (an image: each direction's own uplifted spectrum; 1 nm, "
+                                        "characteristic matrices; rough: over its lobe, 1024 directions, the film at each half vector)";
     return r;
 }
 
