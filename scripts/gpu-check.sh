@@ -90,6 +90,11 @@ for shape in "--light-shape disc --light-angle 15" "--light-shape rectangle --li
   "$fxview" bench effects/spectral/cd.fx --techniques Thesis,Orders --mesh disc --camera-rotate 50,0,0 $shape --frames 5 | tee -a "$out/bench-cd-flat.md" || true
 done
 "$fxview" pick effects/spectral/wavelength.fx -t Lambert --set Kd=1 --set ObjectSpectrum=E --light-position 0,0,3 --light-intensity 120lx --size 33x33 --at 16,16 | tee "$out/pick-photometric.txt" || true
+# Films mirroring a sized light, and rough films through their lobe (the filtered gather on the driver).
+"$fxview" compare effects/spectral/thinfilm.fx -t BubbleFourier --light-shape rectangle --light-size 2,1 --light-position 0,1,4 --size 64x64 --json | tee "$out/compare-film-lamp.jsonl" || true
+for r in 0.2 0.4; do
+  "$fxview" compare effects/spectral/thinfilm.fx -t BubbleFourier --set Roughness=$r --environment sky:35 --ground-truth --size 48x48 --json | tee -a "$out/compare-rough-film.jsonl" || true
+done
 # Issue #28: a .brdf's own importance sampling (isFunc) through the NVIDIA driver, and PBR's sampled
 # specular lobe against the CPU split sum and the ground truth.
 "$fxview" brdf-check tests/effects/brdf/explorer/is_func_sampler.brdf --phi-i 0 --json | tee "$out/brdf-check-isfunc.json" || true
