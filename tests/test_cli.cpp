@@ -120,7 +120,10 @@ TEST_CASE("nonsense arguments exit with 2 and say what is wrong") {
         {"render --light-position 0,0,0 --light-angle 10", "give --light-radius or --light-size instead"},
         {"render --light-shape triangle", "is not sphere, disc or rectangle"},
         {"render --light-shape disc", "give its size"},
-        {"render --light-intensity 500", "not a number with a unit"},
+        {"render --light-intensity 500", "with a unit"},
+        {"render --light-intensity 4e38lx", "0 to 1e30"},
+        {"render --light-intensity 0x10lx", "with a unit"},
+        {"render --light-position 0,0,1e20", "within 1e6 world units"},
         {"render --light-intensity 500nit", "a point light has no surface"},
     };
     for (const auto& [arguments, expected] : cases) {

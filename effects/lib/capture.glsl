@@ -18,6 +18,6 @@ void fx_capture() {
     fx_capture_footprint = vec4(0.0);
 }
 
-// How far a direction turns from this pixel to the next in x plus in y: the blur of an image seen
-// along it (thinfilm.fx stores its mirror direction's in fx_capture_footprint for the reference).
-float fx_pixel_turn(vec3 direction) { return length(dFdxFine(direction)) + length(dFdyFine(direction)); }
+// How far a direction turns from this pixel to the next, the larger of x and y: the blur of an image
+// seen along it (thinfilm.fx stores its mirror direction's in fx_capture_footprint for the reference).
+float fx_pixel_turn(vec3 direction) { return max(length(dFdxFine(direction)), length(dFdyFine(direction))); }

@@ -70,6 +70,8 @@ void set_light_shape(scene::Light& light, const SceneOptions& o, const effect::P
     if (!shape) throw UsageError("--light-shape: '" + excerpt(shape_name) + "' is not sphere, disc or rectangle");
     light.shape = *shape;
     const float distance = glm::length(light.pose.position);
+    // Farther, float shaders square the distance past their range (a black picture, not a dim one).
+    if (!(distance <= 1e6f)) throw UsageError("--light-position: the light must lie within 1e6 world units of the origin");
     if (o.light_angle && *o.light_angle > 0 && distance == 0.0f)
         throw UsageError("--light-angle: the light sits at the origin; give --light-radius or --light-size instead");
     const double angle = glm::radians(o.light_angle.value_or(0.0f));
@@ -87,9 +89,17 @@ void set_light_shape(scene::Light& light, const SceneOptions& o, const effect::P
     }
     if (o.light_size && light.shape != scene::LightShape::Rectangle) throw UsageError("--light-size: only a rectangle light has a width and height (--light-shape rectangle)");
     if (light.shape == scene::LightShape::Rectangle && o.light_radius) throw UsageError("--light-radius: a rectangle light is sized by --light-size W,H");
-    if (light.shape != scene::LightShape::Sphere && !light.has_size())
+    // A preset's own shape and sizes are the preset's errors, at its lines.
+    if (!o.light_size && !o.light_angle && preset.light_size && light.shape != scene::LightShape::Rectangle)
+        throw Error(preset.where("light_size") + "only a rectangle light has a width and height (\"light_shape\": \"rectangle\")");
+    if (light.shape != scene::LightShape::Sphere && !light.has_size()) {
+        const std::string wanted = light.shape == scene::LightShape::Disc ? "radius" : "size";
+        if (!o.light_shape && preset.light_shape)
+            throw Error(preset.where("light_shape") + "a " + scene::light_shape_name(light.shape) + " light needs its " + wanted + " (\"light_" +
+                        wanted + "\" above 0, or --light-" + wanted + " or --light-angle)");
         throw UsageError(std::string("--light-shape ") + scene::light_shape_name(light.shape) + ": give its size (" +
                          (light.shape == scene::LightShape::Disc ? "--light-radius R" : "--light-size W,H") + " or --light-angle DEG)");
+    }
 }
 
 }  // namespace
@@ -130,7 +140,7 @@ RenderRequest to_render_request(const SceneOptions& o) {
     if (o.light_intensity) {
         scene.light.intensity = scene::parse_light_intensity(*o.light_intensity);
         if (!scene.light.intensity)
-            throw UsageError("--light-intensity: '" + excerpt(*o.light_intensity) + "' is not a number with a unit: lx, lm, cd or nit (e.g. 500lx)");
+            throw UsageError("--light-intensity: '" + excerpt(*o.light_intensity) + "' is not a number (0 to 1e30) with a unit: lx, lm, cd or nit (e.g. 500lx)");
     } else if (preset.light_intensity) {
         scene.light.intensity = scene::parse_light_intensity(*preset.light_intensity);  // checked when the preset was read
     }

@@ -147,7 +147,7 @@ PresetScene load_preset_scene(const std::string& path, const ResourceLimits& lim
             }
             scene.light_size = size;
         } else if (key == "light_intensity") {
-            if (!value.is_string() || !scene::parse_light_intensity(value.get<std::string>())) throw bad("a number with a unit: lx, lm, cd or nit (\"500lx\")");
+            if (!value.is_string() || !scene::parse_light_intensity(value.get<std::string>())) throw bad("a number (0 to 1e30) with a unit: lx, lm, cd or nit (\"500lx\")");
             scene.light_intensity = value.get<std::string>();
         } else if (key == "light_spectrum") {
             if (!value.is_string() || value.get<std::string>().empty()) throw bad("a spectral-library name");

@@ -82,8 +82,12 @@ LightGeometry light_geometry(const Light& light) {
         g.radius = std::max(light.radius, 0.0f);
         g.half_size = glm::dvec2(g.radius);
     }
-    if (light.shape != LightShape::Sphere && g.half_size.x > 0 && g.half_size.y > 0)
-        g.radiance = 1.0 / flat_light_irradiance_at_origin(light.shape, g.half_size, distance);
+    if (light.shape != LightShape::Sphere && g.half_size.x > 0 && g.half_size.y > 0) {
+        // A light of under 1e-12 sr seen from the origin is a point: its radiance would pass float's
+        // range on the GPU (and 0 x inf make the picture black).
+        const double irradiance = flat_light_irradiance_at_origin(light.shape, g.half_size, distance);
+        if (irradiance > 1e-12) g.radiance = 1.0 / irradiance;
+    }
     return g;
 }
 

@@ -31,7 +31,7 @@ struct LightGeometry {
     double radius = 0;            // sphere, disc; 0 with a sphere: a point
     glm::dvec2 half_size{0.0};    // flat lights: half extents along u and v (a disc: its radius twice)
     glm::dvec3 u{1, 0, 0}, v{0, 1, 0}, normal{0, 0, 1};  // flat lights: in-plane axes, emitting side (towards the origin)
-    double radiance = 0;          // flat lights: radiance per unit intensity; 0: none (a sphere, a degenerate flat light)
+    double radiance = 0;          // flat lights: radiance per unit intensity; 0: none (a sphere; a flat light of under 1e-12 sr seen from the origin, a point)
 
     bool is_flat() const { return shape != LightShape::Sphere && radiance > 0; }
     double area() const;  // flat lights

@@ -1,6 +1,7 @@
 #include "scene/light_intensity.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "core/error.hpp"
@@ -15,16 +16,20 @@ constexpr double kPi = std::numbers::pi;
 
 std::optional<LightIntensity> parse_light_intensity(std::string_view text) {
     const std::string s(text);
-    size_t used = 0;
+    // A plain decimal number (no hexadecimal, no inf or nan), then the unit.
+    const size_t used = s.find_first_not_of("0123456789.eE+-");
+    if (used == 0 || used == std::string::npos) return std::nullopt;
     double value = 0;
     try {
-        value = std::stod(s, &used);
+        size_t parsed = 0;
+        value = std::stod(s.substr(0, used), &parsed);
+        if (parsed != used) return std::nullopt;
     } catch (const std::exception&) {
         return std::nullopt;
     }
     std::string unit = s.substr(used);
     while (!unit.empty() && unit.front() == ' ') unit.erase(unit.begin());
-    if (!std::isfinite(value) || value < 0) return std::nullopt;
+    if (!std::isfinite(value) || value < 0 || value > kMaxLightIntensity) return std::nullopt;
     LightIntensity intensity;
     intensity.value = value;
     if (unit == "lx" || unit == "lux") intensity.unit = LightIntensity::Unit::Lux;
@@ -53,6 +58,15 @@ std::string to_string(const LightIntensity& intensity) {
 double illuminance_at_origin(const Light& light, const LightIntensity& intensity) {
     const LightGeometry g = light_geometry(light);
     const double distance = glm::length(g.centre), value = intensity.value;
+    // The effects take E in float: what passes 1e30 lx would overflow their sums.
+    const auto checked = [](double lux) {
+        if (!(lux <= kMaxLightIntensity)) {
+            char text[64];
+            std::snprintf(text, sizeof text, "%.3g", lux);
+            throw UsageError(std::string("--light-intensity: ") + text + " lx at the origin is beyond 1e30");
+        }
+        return lux;
+    };
     if (intensity.unit == LightIntensity::Unit::Lux) return value;
     if (g.is_flat()) {
         // A one-sided Lambertian emitter of luminance L: flux π L A, axial intensity L A; E at the origin
@@ -61,18 +75,18 @@ double illuminance_at_origin(const Light& light, const LightIntensity& intensity
         const double luminance = intensity.unit == LightIntensity::Unit::Nit       ? value
                                  : intensity.unit == LightIntensity::Unit::Candela ? value / area
                                                                                    : value / (kPi * area);
-        return luminance * flat_light_irradiance_at_origin(g.shape, g.half_size, distance);
+        return checked(luminance * flat_light_irradiance_at_origin(g.shape, g.half_size, distance));
     }
     if (intensity.unit == LightIntensity::Unit::Nit) {
         // A sphere of luminance L seen under sin α = R / D: E = π L sin²α (its radiance over the disc it shows).
         if (g.radius <= 0) throw UsageError("--light-intensity: a point light has no surface, so no luminance; give lx, lm or cd");
         if (g.radius >= distance) throw UsageError("--light-intensity: the origin lies inside the sphere light; give lx");
-        return kPi * value * (g.radius / distance) * (g.radius / distance);
+        return checked(kPi * value * (g.radius / distance) * (g.radius / distance));
     }
     if (distance <= 0) throw UsageError("--light-intensity: the light sits at the origin; give lx");
     // An isotropic point or sphere: I = Φ / 4π, E = I / D².
     const double candela = intensity.unit == LightIntensity::Unit::Candela ? value : value / (4.0 * kPi);
-    return candela / (distance * distance);
+    return checked(candela / (distance * distance));
 }
 
 }  // namespace fxview::scene

@@ -20,8 +20,11 @@ struct LightIntensity {
     Unit unit = Unit::Lux;
 };
 
+// The largest value and illuminance accepted: the effects sum E in float.
+inline constexpr double kMaxLightIntensity = 1e30;
+
 // "500lx", "800 lm", "120cd", "3000nit" (also "lux", "cd/m2"); empty for anything else (a number
-// without a unit, a negative or non-finite value).
+// without a unit, a negative value or one above kMaxLightIntensity, hexadecimal, inf, nan).
 std::optional<LightIntensity> parse_light_intensity(std::string_view text);
 std::string to_string(const LightIntensity& intensity);  // "500 lx"
 const char* unit_name(LightIntensity::Unit unit);
