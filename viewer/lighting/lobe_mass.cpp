@@ -68,4 +68,9 @@ DfgTable make_lobe_mass_table(int size) {
     return table;
 }
 
+const DfgTable& lobe_mass_table() {
+    static const DfgTable table = make_lobe_mass_table();  // initialised once, thread-safe
+    return table;
+}
+
 }  // namespace fxview::lighting

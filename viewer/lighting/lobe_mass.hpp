@@ -13,6 +13,9 @@ namespace fxview::lighting {
 // DfgTable lays values out: n·v = i / (size - 1) across, log2(p) / 8 = j / (size - 1) up (p from 1 to
 // 256); x Phong, y Blinn, z 0. Multiply by lobe_mass_unit(p).
 DfgTable make_lobe_mass_table(int size = 64);
+// The 64² table, made once per process (a constant of the lobes: every environment shares it; making
+// it takes ~0.4 s, which each effect reopened in a sweep would pay again).
+const DfgTable& lobe_mass_table();
 double lobe_mass_row(double power);  // log2(p) / 8 clamped to [0, 1]: the table's second coordinate
 inline double lobe_mass_unit(double power) { return 2.0 / (power + 1.0); }
 

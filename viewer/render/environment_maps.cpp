@@ -216,10 +216,7 @@ const texture::TextureData& EnvironmentMaps::specular_level(int level) const {
     return specular_levels_.at(static_cast<size_t>(level));
 }
 
-const lighting::DfgTable& EnvironmentMaps::lobe_mass() const {
-    std::call_once(lobe_mass_made_, [this] { lobe_mass_ = lighting::make_lobe_mass_table(); });
-    return lobe_mass_;
-}
+const lighting::DfgTable& EnvironmentMaps::lobe_mass() const { return lighting::lobe_mass_table(); }
 
 const texture::TextureData& EnvironmentMaps::spectral_irradiance_data() const {
     std::call_once(spectral_irradiance_made_, [this] {

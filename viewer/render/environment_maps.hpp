@@ -69,7 +69,7 @@ public:
     const lighting::PrefilteredEnvironment& prefiltered() const { return prefiltered_; }  // the SH and discs; `specular` empty
     const lighting::Environment& unfiltered() const { return environment_; }  // the radiance and its discs, for ground truths
     const lighting::DfgTable& dfg() const { return dfg_; }
-    const lighting::DfgTable& lobe_mass() const;  // made on first use, thread-safe
+    const lighting::DfgTable& lobe_mass() const;  // lighting::lobe_mass_table(), shared by every environment
     // environment:specular on the CPU, made on first use (thread-safe; seconds: the GGX prefiltering).
     const texture::TextureData& specular_data() const;          // faces[face][level], GL rows
     const texture::TextureData& specular_level(int level) const;  // one level's six faces
@@ -93,8 +93,6 @@ private:
     mutable std::once_flag spectral_irradiance_made_;
     mutable texture::TextureData spectral_irradiance_data_;
     mutable std::unique_ptr<GpuTexture> spectral_irradiance_;
-    mutable std::once_flag lobe_mass_made_;
-    mutable lighting::DfgTable lobe_mass_;
     mutable std::unique_ptr<GpuTexture> lobe_mass_texture_;
     GpuTexture irradiance_, dfg_texture_, background_, spectral_weights_, spectra_;
     // The sky's Fourier tables: the CPU copy for references (any thread), the GL texture for the
