@@ -451,6 +451,19 @@ TEST_CASE("the viewer lights and shows the environment as render does, through t
     CHECK(texel(load_png(after), 2, 2)[1] > texel(view, 2, 2)[1] + 0.05f);
 }
 
+// The viewer's screenshot against render's picture at three pixels (within an 8-bit code), and
+// whether `other` differs from it there: a scene setting set by script as the Scene tab sets it.
+bool matches_render_and_differs_from(const fxview::texture::TextureData& view, const fxview::texture::TextureData& render,
+                                     const fxview::texture::TextureData& other) {
+    bool differs = false;
+    for (const auto& [x, y] : {std::pair{24, 24}, std::pair{16, 20}, std::pair{30, 30}})
+        for (int c = 0; c < 3; ++c) {
+            CHECK(std::abs(texel(view, x, y)[c] - texel(render, x, y)[c]) <= 1.0f / 255.0f + 1e-6f);
+            differs = differs || std::abs(texel(other, x, y)[c] - texel(view, x, y)[c]) > 2.0f / 255.0f;
+        }
+    return differs;
+}
+
 TEST_CASE("the light's spectrum set by script (as the Scene tab) gives render --light-spectrum's picture; an unknown name is refused") {
     const std::string effect = std::string(FXVIEW_SOURCE_EFFECTS_DIR) + "/spectral/wavelength.fx";
     const std::string shot = temp_path("light-view.png"), rendered = temp_path("light-render.png"), own = temp_path("light-own.png");
@@ -462,12 +475,7 @@ TEST_CASE("the light's spectrum set by script (as the Scene tab) gives render --
     CHECK(r.err.find("light spectrum 'Candle' is not in the spectral library") != std::string::npos);
     REQUIRE(run("render " + effect + " -t Phong --light-spectrum F11 --size 48x48 --out " + rendered).exit_code == 0);
     const auto view = load_png(shot), render = load_png(rendered), back = load_png(own);
-    bool differs = false;
-    for (const auto& [x, y] : {std::pair{24, 24}, std::pair{16, 20}, std::pair{30, 30}})
-        for (int c = 0; c < 3; ++c) {
-            CHECK(std::abs(texel(view, x, y)[c] - texel(render, x, y)[c]) <= 1.0f / 255.0f + 1e-6f);
-            differs = differs || std::abs(texel(back, x, y)[c] - texel(view, x, y)[c]) > 2.0f / 255.0f;
-        }
+    const bool differs = matches_render_and_differs_from(view, render, back);
     CHECK(differs);  // "none" gives the effect its own D65 back
 }
 
@@ -482,12 +490,7 @@ TEST_CASE("the light's shape set by script (as the Scene tab) gives render --lig
     CHECK(r.err.find("light-shape: sizes from 0 to 1000") != std::string::npos);
     REQUIRE(run("render " + effect + " -t Phong --light-shape rectangle --light-size 3,1 --size 48x48 --out " + rendered).exit_code == 0);
     const auto view = load_png(shot), render = load_png(rendered), back = load_png(point);
-    bool differs = false;
-    for (const auto& [x, y] : {std::pair{24, 24}, std::pair{16, 20}, std::pair{30, 30}})
-        for (int c = 0; c < 3; ++c) {
-            CHECK(std::abs(texel(view, x, y)[c] - texel(render, x, y)[c]) <= 1.0f / 255.0f + 1e-6f);
-            differs = differs || std::abs(texel(back, x, y)[c] - texel(view, x, y)[c]) > 2.0f / 255.0f;
-        }
+    const bool differs = matches_render_and_differs_from(view, render, back);
     CHECK(differs);  // a point light again: another picture
 }
 

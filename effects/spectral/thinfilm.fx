@@ -75,7 +75,8 @@ Film film_at(vec3 position, vec3 normal, vec2 uv, float blur) {
     Film f;
     f.cos_light = clamp(dot(n, normalize(LightPosition - position)), 0.0, 1.0);
     f.cos_view = clamp(dot(n, v), 0.0, 1.0);
-    vec2 seen = Incidence == 0 && Roughness > 0.0 ? film_rough_cosine(n, v, film_lobe_power()) : vec2(f.cos_view, 0.0);
+    float power = film_lobe_power();
+    vec2 seen = Incidence == 0 && Roughness > 0.0 ? film_rough_cosine(n, v, power) : vec2(f.cos_view, 0.0);
     f.cos0 = Incidence == 1 ? f.cos_light : seen.x;
     f.cos0_spread = Incidence == 1 ? 0.0 : seen.y;
     vec2 centred = 2.0 * uv - 1.0;
@@ -83,9 +84,9 @@ Film film_at(vec3 position, vec3 normal, vec2 uv, float blur) {
     film_under_sky = Incidence == 0 && spectral_environment();
     vec3 mirror = reflect(-v, n);
     bool rough = Roughness > 0.0;
-    if (film_under_sky) film_sky_weights = rough ? film_rough_weights(n, v, film_lobe_power()) : spectral_environment_weights(mirror);
+    if (film_under_sky) film_sky_weights = rough ? film_rough_weights(n, v, power) : spectral_environment_weights(mirror);
     // A rough film spreads a lamp's image over the lobe's width, 2 / √p (the ramp keeps its energy).
-    if (rough) blur += 2.0 / sqrt(film_lobe_power());
+    if (rough) blur += 2.0 / sqrt(power);
     film_lamp = Incidence == 0 ? 3.14159265358979323846 * scene_light_radiance(position, mirror, blur) : 0.0;
     film_footprint = vec4(blur, 0.0, 0.0, 0.0);
     return f;
@@ -93,8 +94,8 @@ Film film_at(vec3 position, vec3 normal, vec2 uv, float blur) {
 
 // The light at `nm`: the light spectrum, or the sky seen in the mirror direction; and the lamp's image.
 float light_at(int nm) {
-    float lamp = film_lamp * spectrum_at(LightSpectrum, nm);
-    return (film_under_sky ? spectral_environment_radiance(film_sky_weights, nm) : spectrum_at(LightSpectrum, nm)) + lamp;
+    float spectrum = spectrum_at(LightSpectrum, nm);
+    return (film_under_sky ? spectral_environment_radiance(film_sky_weights, nm) : spectrum) + film_lamp * spectrum;
 }
 
 // One wavelength's reflected light, weighted by the CMFs; ybar_sum collects k's denominator.

@@ -177,7 +177,7 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
         input.camera = camera;
         input.light = light;
         input.lamp = lamp;
-        input.light_radius = lamp.shape == scene::LightShape::Sphere ? lamp.radius : 0.0;
+        input.light_radius = lamp.is_flat() ? 0.0 : lamp.equivalent_radius();  // what LIGHTRADIUS gives the GPU beside a flat light
         return input;
     };
     std::atomic<int> next_row{0};

@@ -22,7 +22,7 @@ struct ShadingInput {
     glm::dvec3 tangent{0.0};   // interpolated, not normalised
     glm::dvec3 camera{0.0};    // world-space camera position
     glm::dvec3 light{0.0};     // world-space light position
-    double light_radius = 0;   // of a sphere light; 0: a point light or a flat one
+    double light_radius = 0;   // of a sphere light (as LIGHTRADIUS gives it); 0: a point light or a flat one
     scene::LightGeometry lamp; // the light's shape (a flat light: lamp.is_flat())
     // What the technique captured besides (capture.glsl's attachment 5); for cd.fx's Grating the
     // pixel's extent in path difference (nm) across and along the tracks, for its Orders how far the
