@@ -209,6 +209,16 @@ float sinc_squared_weight(int m) {
 void lamp_orders(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, vec3 view, vec3 light, float edge, float view_spread, float turn_spread,
                  float weights[kMaxOrder + 1], float shares[kMaxOrder + 1], float diffuse, inout vec3 xyz, inout float ybar_sum) {
     float tracks = float(max(Tracks, 1)), reach = sqrt(max(1.0 - view.y * view.y, 0.0)), spacing = max(TrackSpacing, 1.0);
+    // Every order leaves with the along-track component -v_y: none meets the light unless that lies
+    // within `near` of the light's l_y (|l_y - c_y| <= |l - c|) for the widest order at the longest
+    // wavelength. Most pixels lie outside that sector and skip the orders.
+    float longest = float(Upper) / spacing;
+    int most = min(int(ceil((abs(view.x) + reach) * spacing / float(max(Lower, 1)))), kMaxOrder);
+    bool lit = view.z > 0.0 && abs(view.y + light.y) <= edge + 0.5 * (longest / tracks + view_spread + float(most) * longest * turn_spread);
+    if (!lit) {
+        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) add_sample(xyz, ybar_sum, nm, 0.0, diffuse);
+        return;
+    }
     for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
         float ratio = float(nm) / spacing, orders_per_unit = spacing / float(nm);  // λ / d and d / λ
         // The propagating orders: |m λ/d - v_x|² + v_y² < 1.
@@ -221,7 +231,7 @@ void lamp_orders(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, vec
         int from = max(first, int(ceil((view.x + light.x - near) * orders_per_unit)));
         int to = min(last, int(floor((view.x + light.x + near) * orders_per_unit)));
         float radiance = 0.0;
-        for (int m = from; m <= to && view.z > 0.0; ++m) {
+        for (int m = from; m <= to; ++m) {
             vec2 tangential = vec2(float(m) * ratio - view.x, -view.y);
             float z2 = 1.0 - dot(tangential, tangential);
             if (z2 <= 0.0) continue;
