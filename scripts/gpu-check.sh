@@ -99,3 +99,10 @@ done
 # specular lobe against the CPU split sum and the ground truth.
 "$fxview" brdf-check tests/effects/brdf/explorer/is_func_sampler.brdf --phi-i 0 --json | tee "$out/brdf-check-isfunc.json" || true
 "$fxview" compare effects/brdf/analytic.fx -t PBR --preset effects/brdf/presets/gold.json --environment studio --ground-truth --size 64x64 --json | tee "$out/compare-pbr-lobe.jsonl" || true
+# Issue #25 item 1: BRDF effects under sized lights (the balance heuristic over the light's points and the
+# lobe's directions) against their CPU twin and the integral over the light, and what they cost.
+for shape in "--light-angle 15" "--light-shape disc --light-angle 15" "--light-shape rectangle --light-size 3,1"; do
+  "$fxview" compare effects/brdf/analytic.fx $shape --ground-truth --size 64x64 --json | tee -a "$out/compare-brdf-area.jsonl" || true
+  "$fxview" compare effects/brdf/measured.fx $shape --ground-truth --size 64x64 --json | tee -a "$out/compare-brdf-area.jsonl" || true
+  "$fxview" bench effects/brdf/analytic.fx --techniques Lambert,PBR,CookTorranceGGX $shape --frames 5 | tee -a "$out/bench-brdf-area.md" || true
+done

@@ -7,6 +7,7 @@
 #include "standard.glsl"
 #include "brdf.glsl"
 #include "environment_pbr.glsl"
+#include "area_light.glsl"
 
 uniform float LightIrradiance < string UIName = "Light irradiance E"; float UIMin = 0; float UIMax = 20; float UIStep = 0.1; string UIGroup = "Light";
                                 string UIHelp = "Irradiance the point light delivers at normal incidence (no distance fall-off); a scene light intensity (--light-intensity, Scene tab) sets it in lux"; string SceneLight = "irradiance"; > = 3.0;
@@ -59,17 +60,22 @@ uniform vec3 WardSpecular < string UIName = "ks"; string UIWidget = "color"; str
 uniform float WardAlpha < string UIName = "Width alpha"; float UIMin = 0.001; float UIMax = 1; float UIStep = 0.001; string UIGroup = "Ward";
                           string UIHelp = "RMS slope of the isotropic Ward lobe"; > = 0.15;
 
-// Every technique: f at this fragment times E (n·l); black where light or eye is below the surface.
+// Every technique: f at this fragment times E (n·l) under a point light, black where light or eye is
+// below the surface; under a sized light E times f cos θ integrated over it (area_light_brdf.glsl,
+// sampled about a GGX lobe of the model's rough width).
 Frame frame_here(vec3 position, vec3 normal, vec3 tangent) { return make_frame(position, normal, tangent, LightPosition, CameraPosition); }
 vec4 radiance(Frame f, vec3 brdf) { return vec4(visible(f) ? brdf * LightIrradiance * f.nl : vec3(0.0), 1.0); }
 
 GLSLShader LambertFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
+    vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { return BaseColor / kPi; }
+    #include "area_light_brdf.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
-        color = radiance(f, visible(f) ? BaseColor / kPi : vec3(0.0));
+        color = scene_light_sized() ? vec4(LightIrradiance * scene_light_brdf(fs_in.world_position, f.n, f.v, f.t, cross(f.n, f.t), 1.0), 1.0)
+                                    : radiance(f, visible(f) ? BaseColor / kPi : vec3(0.0));
         color.rgb += BaseColor * environment_irradiance(environment_facing_normal(f.n, f.v));
         fx_capture();
     }
@@ -78,10 +84,13 @@ GLSLShader LambertFS {
 GLSLShader PBRFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
+    vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { return metallic_roughness(frame_of(L, V, N, X), BaseColor, Metallic, Roughness); }
+    #include "area_light_brdf.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
-        color = radiance(f, visible(f) ? metallic_roughness(f, BaseColor, Metallic, Roughness) : vec3(0.0));
+        color = scene_light_sized() ? vec4(LightIrradiance * scene_light_brdf(fs_in.world_position, f.n, f.v, f.t, cross(f.n, f.t), Roughness * Roughness), 1.0)
+                                    : radiance(f, visible(f) ? metallic_roughness(f, BaseColor, Metallic, Roughness) : vec3(0.0));
         color.rgb += metallic_roughness_environment(f, BaseColor, Metallic, Roughness);
         fx_capture();
     }
@@ -92,11 +101,14 @@ GLSLShader ModifiedPhongFS {
     #include "capture.glsl"
     vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return modified_phong(g, PhongDiffuse, PhongSpecular, PhongExponent); }
     #include "environment_light.glsl"
+    #include "area_light_brdf.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
-        color = radiance(f, visible(f) ? modified_phong(f, PhongDiffuse, PhongSpecular, PhongExponent) : vec3(0.0));
-        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(sqrt(2.0 / (4.0 * PhongExponent + 2.0)), 0.001, 1.0));
+        float alpha = clamp(sqrt(2.0 / (4.0 * PhongExponent + 2.0)), 0.001, 1.0);
+        color = scene_light_sized() ? vec4(LightIrradiance * scene_light_brdf(fs_in.world_position, f.n, f.v, f.t, cross(f.n, f.t), alpha), 1.0)
+                                    : radiance(f, visible(f) ? modified_phong(f, PhongDiffuse, PhongSpecular, PhongExponent) : vec3(0.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), alpha);
         fx_capture();
     }
 }
@@ -106,11 +118,14 @@ GLSLShader CookTorranceBeckmannFS {
     #include "capture.glsl"
     vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return cook_torrance_beckmann(g, CTDiffuse, CTSpecular, BeckmannM, Eta, PrintedBeckmann); }
     #include "environment_light.glsl"
+    #include "area_light_brdf.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
-        color = radiance(f, visible(f) ? cook_torrance_beckmann(f, CTDiffuse, CTSpecular, BeckmannM, Eta, PrintedBeckmann) : vec3(0.0));
-        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(BeckmannM, 0.001, 1.0));
+        float alpha = clamp(BeckmannM, 0.001, 1.0);
+        color = scene_light_sized() ? vec4(LightIrradiance * scene_light_brdf(fs_in.world_position, f.n, f.v, f.t, cross(f.n, f.t), alpha), 1.0)
+                                    : radiance(f, visible(f) ? cook_torrance_beckmann(f, CTDiffuse, CTSpecular, BeckmannM, Eta, PrintedBeckmann) : vec3(0.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), alpha);
         fx_capture();
     }
 }
@@ -120,11 +135,14 @@ GLSLShader AshikhminShirleyFS {
     #include "capture.glsl"
     vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return ashikhmin_shirley(g, ASDiffuse, ASSpecular, Nu, Nv); }
     #include "environment_light.glsl"
+    #include "area_light_brdf.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
-        color = radiance(f, visible(f) ? ashikhmin_shirley(f, ASDiffuse, ASSpecular, Nu, Nv) : vec3(0.0));
-        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(sqrt(2.0 / (sqrt(Nu * Nv) + 2.0)), 0.001, 1.0));
+        float alpha = clamp(sqrt(2.0 / (sqrt(Nu * Nv) + 2.0)), 0.001, 1.0);
+        color = scene_light_sized() ? vec4(LightIrradiance * scene_light_brdf(fs_in.world_position, f.n, f.v, f.t, cross(f.n, f.t), alpha), 1.0)
+                                    : radiance(f, visible(f) ? ashikhmin_shirley(f, ASDiffuse, ASSpecular, Nu, Nv) : vec3(0.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), alpha);
         fx_capture();
     }
 }
@@ -134,11 +152,14 @@ GLSLShader AshikhminShirleyFitFS {
     #include "capture.glsl"
     vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return ashikhmin_shirley_fit(g, FitDiffuse, FitSpecular, FitExponent); }
     #include "environment_light.glsl"
+    #include "area_light_brdf.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
-        color = radiance(f, visible(f) ? ashikhmin_shirley_fit(f, FitDiffuse, FitSpecular, FitExponent) : vec3(0.0));
-        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(sqrt(2.0 / (FitExponent + 2.0)), 0.001, 1.0));
+        float alpha = clamp(sqrt(2.0 / (FitExponent + 2.0)), 0.001, 1.0);
+        color = scene_light_sized() ? vec4(LightIrradiance * scene_light_brdf(fs_in.world_position, f.n, f.v, f.t, cross(f.n, f.t), alpha), 1.0)
+                                    : radiance(f, visible(f) ? ashikhmin_shirley_fit(f, FitDiffuse, FitSpecular, FitExponent) : vec3(0.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), alpha);
         fx_capture();
     }
 }
@@ -148,11 +169,14 @@ GLSLShader CookTorranceGGXFS {
     #include "capture.glsl"
     vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return cook_torrance_ggx(g, GGXDiffuse, GGXF0, GGXAlpha); }
     #include "environment_light.glsl"
+    #include "area_light_brdf.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
-        color = radiance(f, visible(f) ? cook_torrance_ggx(f, GGXDiffuse, GGXF0, GGXAlpha) : vec3(0.0));
-        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(GGXAlpha, 0.001, 1.0));
+        float alpha = clamp(GGXAlpha, 0.001, 1.0);
+        color = scene_light_sized() ? vec4(LightIrradiance * scene_light_brdf(fs_in.world_position, f.n, f.v, f.t, cross(f.n, f.t), alpha), 1.0)
+                                    : radiance(f, visible(f) ? cook_torrance_ggx(f, GGXDiffuse, GGXF0, GGXAlpha) : vec3(0.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), alpha);
         fx_capture();
     }
 }
@@ -162,11 +186,14 @@ GLSLShader CookTorranceBeckmannSchlickFS {
     #include "capture.glsl"
     vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return cook_torrance_beckmann_schlick(g, CTSDiffuse, CTSF0, CTSSlope); }
     #include "environment_light.glsl"
+    #include "area_light_brdf.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
-        color = radiance(f, visible(f) ? cook_torrance_beckmann_schlick(f, CTSDiffuse, CTSF0, CTSSlope) : vec3(0.0));
-        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(CTSSlope, 0.001, 1.0));
+        float alpha = clamp(CTSSlope, 0.001, 1.0);
+        color = scene_light_sized() ? vec4(LightIrradiance * scene_light_brdf(fs_in.world_position, f.n, f.v, f.t, cross(f.n, f.t), alpha), 1.0)
+                                    : radiance(f, visible(f) ? cook_torrance_beckmann_schlick(f, CTSDiffuse, CTSF0, CTSSlope) : vec3(0.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), alpha);
         fx_capture();
     }
 }
@@ -176,11 +203,14 @@ GLSLShader BlinnPhongFS {
     #include "capture.glsl"
     vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return blinn_phong(g, BlinnDiffuse, BlinnSpecular, BlinnExponent); }
     #include "environment_light.glsl"
+    #include "area_light_brdf.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
-        color = radiance(f, visible(f) ? blinn_phong(f, BlinnDiffuse, BlinnSpecular, BlinnExponent) : vec3(0.0));
-        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(sqrt(2.0 / (BlinnExponent + 2.0)), 0.001, 1.0));
+        float alpha = clamp(sqrt(2.0 / (BlinnExponent + 2.0)), 0.001, 1.0);
+        color = scene_light_sized() ? vec4(LightIrradiance * scene_light_brdf(fs_in.world_position, f.n, f.v, f.t, cross(f.n, f.t), alpha), 1.0)
+                                    : radiance(f, visible(f) ? blinn_phong(f, BlinnDiffuse, BlinnSpecular, BlinnExponent) : vec3(0.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), alpha);
         fx_capture();
     }
 }
@@ -190,11 +220,14 @@ GLSLShader WardFS {
     #include "capture.glsl"
     vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return ward_isotropic(g, WardDiffuse, WardSpecular, WardAlpha); }
     #include "environment_light.glsl"
+    #include "area_light_brdf.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
-        color = radiance(f, visible(f) ? ward_isotropic(f, WardDiffuse, WardSpecular, WardAlpha) : vec3(0.0));
-        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), clamp(WardAlpha, 0.001, 1.0));
+        float alpha = clamp(WardAlpha, 0.001, 1.0);
+        color = scene_light_sized() ? vec4(LightIrradiance * scene_light_brdf(fs_in.world_position, f.n, f.v, f.t, cross(f.n, f.t), alpha), 1.0)
+                                    : radiance(f, visible(f) ? ward_isotropic(f, WardDiffuse, WardSpecular, WardAlpha) : vec3(0.0));
+        color.rgb += environment_light(f.n, f.v, f.t, cross(f.n, f.t), alpha);
         fx_capture();
     }
 }

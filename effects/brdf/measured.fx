@@ -5,6 +5,7 @@
 // absolute difference. Radiance L = f · E · (n·l). CPU references: viewer/reference/measured_reference.cpp.
 #include "standard.glsl"
 #include "brdf.glsl"
+#include "area_light.glsl"
 
 uniform sampler3D Measured < string ResourceName = "sample-brdf.csv"; string Filter = "linear"; string Wrap = "clamp";
                              string UIName = "Measured BRDF";
@@ -41,14 +42,20 @@ vec3 fitted(Frame f) { return ashikhmin_shirley_fit(f, FitDiffuse, FitSpecular, 
 
 Frame frame_here(vec3 position, vec3 normal, vec3 tangent) { return make_frame(position, normal, tangent, LightPosition, CameraPosition); }
 vec4 radiance(Frame f, vec3 brdf) { return vec4(visible(f) ? brdf * LightIrradiance * f.nl : vec3(0.0), 1.0); }
+// A sized light: E times f cos θ integrated over it (area_light_brdf.glsl), its lobe directions drawn
+// about the fitted exponent's lobe.
+float lobe_alpha() { return sqrt(2.0 / (FitExponent + 2.0)); }
 
 GLSLShader MeasuredFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
+    vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return measured(g); }
+    #include "area_light_brdf.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
-        color = radiance(f, visible(f) ? measured(f) : vec3(0.0));
+        if (scene_light_sized()) color = vec4(LightIrradiance * scene_light_brdf(fs_in.world_position, f.n, f.v, f.t, cross(f.n, f.t), lobe_alpha()), 1.0);
+        else color = radiance(f, visible(f) ? measured(f) : vec3(0.0));
         fx_capture();
     }
 }
@@ -56,10 +63,13 @@ GLSLShader MeasuredFS {
 GLSLShader FittedFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
+    vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return fitted(g); }
+    #include "area_light_brdf.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
-        color = radiance(f, visible(f) ? fitted(f) : vec3(0.0));
+        if (scene_light_sized()) color = vec4(LightIrradiance * scene_light_brdf(fs_in.world_position, f.n, f.v, f.t, cross(f.n, f.t), lobe_alpha()), 1.0);
+        else color = radiance(f, visible(f) ? fitted(f) : vec3(0.0));
         fx_capture();
     }
 }
@@ -67,10 +77,13 @@ GLSLShader FittedFS {
 GLSLShader DifferenceFS {
     #include "fragment_inputs.glsl"
     #include "capture.glsl"
+    vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { Frame g = frame_of(L, V, N, X); return DifferenceScale * abs(measured(g) - fitted(g)); }
+    #include "area_light_brdf.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         Frame f = frame_here(fs_in.world_position, fs_in.normal, fs_in.tangent);
-        color = radiance(f, visible(f) ? DifferenceScale * abs(measured(f) - fitted(f)) : vec3(0.0));
+        if (scene_light_sized()) color = vec4(LightIrradiance * scene_light_brdf(fs_in.world_position, f.n, f.v, f.t, cross(f.n, f.t), lobe_alpha()), 1.0);
+        else color = radiance(f, visible(f) ? DifferenceScale * abs(measured(f) - fitted(f)) : vec3(0.0));
         fx_capture();
     }
 }

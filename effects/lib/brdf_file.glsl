@@ -3,6 +3,7 @@
 // vectors to the light and the eye, the normal, the tangent and the bitangent (X × Y = N).
 // Names here start with fx/Fx so that they do not collide with the file's own helpers.
 #include "environment.glsl"
+#include "area_light.glsl"
 
 uniform float LightIrradiance < string UIName = "Light irradiance E"; float UIMin = 0; float UIMax = 20; float UIStep = 0.1; string UIGroup = "Light";
                                 string UIHelp = "Irradiance the point light delivers at normal incidence (no distance fall-off); a scene light intensity (--light-intensity, Scene tab) sets it in lux"; string SceneLight = "irradiance"; > = 3.0;
@@ -26,6 +27,7 @@ GLSLShader FxBrdfLitFS {
     #include "capture.glsl"
     vec3 fx_environment_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { return vec3(BRDF(L, V, N, X, Y)); }
     #include "environment_light.glsl"
+    #include "area_light_brdf.glsl"
     layout(location = 0) out vec4 color;
     void main() {
         float nl;
@@ -34,12 +36,13 @@ GLSLShader FxBrdfLitFS {
         // it cannot spread through filtering; BrdfValue keeps the raw value, brdf-check counts them.
         if (any(isnan(f)) || any(isinf(f))) f = vec3(0.0);
         color = vec4(f * LightIrradiance * max(nl, 0.0), 1.0);
-        // The environment's light, sampled about the mirror direction with a medium lobe (the file's
-        // own lobe is unknown; the estimate is unbiased whatever it is, its noise is not).
+        // The environment's light and a sized scene light, sampled about the mirror direction with a
+        // medium lobe (the file's own lobe is unknown; the estimates are unbiased whatever it is).
         vec3 n = normalize(fs_in.normal), v = normalize(CameraPosition - fs_in.world_position);
         vec3 x = fs_in.tangent - n * dot(n, fs_in.tangent);
         if (dot(x, x) < 1e-12) x = cross(n, abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0));
         x = normalize(x);
+        if (scene_light_sized()) color.rgb = LightIrradiance * scene_light_brdf(fs_in.world_position, n, v, x, cross(n, x), 0.3);
         color.rgb += environment_light(n, v, x, cross(n, x), 0.3);
         fx_capture();
     }
@@ -57,7 +60,7 @@ GLSLShader FxBrdfValueFS {
 }
 
 technique Lit < bool Default = true; string UIName = "Lit by the point light and the environment";
-                string UIHelp = "Outgoing radiance f(l, v) E (n.l) under the scene's point light, plus the environment's light (32 filtered samples), linear RGB"; >
+                string UIHelp = "Outgoing radiance f(l, v) E (n.l) under the scene's point light (under a sized light f cos integrated over it), plus the environment's light (32 filtered samples), linear RGB"; >
     { pass p0 { VertexShader = StandardVS; FragmentShader = FxBrdfLitFS; } }
 technique BrdfValue < string UIName = "BRDF value f(l, v)";
                       string UIHelp = "The BRDF itself at each fragment, without the light's irradiance or n.l"; >

@@ -203,7 +203,9 @@ CompareResult compare_technique(const RenderRequest& request, const std::string&
                     if (with_truth) {
                         const unsigned seed = static_cast<unsigned>(y * request.width + x + 1);
                         out.truth = ref->truth(input, reference_context, seed);
-                        out.second_truth = ref->truth(input, reference_context, seed + 0x9E3779B9u);  // another sequence
+                        out.second_truth = ref->truth_deterministic_without_environment && request.scene.environment.source.empty()
+                                               ? out.truth
+                                               : ref->truth(input, reference_context, seed + 0x9E3779B9u);  // another sequence
                     }
                 }
         } catch (...) {

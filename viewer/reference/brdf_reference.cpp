@@ -11,6 +11,7 @@
 
 #include "brdf/direction_sampling.hpp"
 #include "brdf/models.hpp"
+#include "reference/area_light_brdf.hpp"
 #include "reference/brdf_sensitivity.hpp"
 #include "reference/environment_reference.hpp"
 
@@ -23,22 +24,51 @@ glm::dvec3 colour(const ReferenceContext& c, const std::string& name) {
 }
 
 template <typename ModelFromParameters>
-Reference make(ModelFromParameters model_from, double tolerance, std::string why) {
+Reference make(ModelFromParameters model_from, std::function<double(const ReferenceContext&)> alpha_from, double tolerance, std::string why) {
+    // f(l, v) of the model for the pixel's eye and frame, towards any l (a sized light's directions).
+    const auto towards = [model_from](const ReferenceContext& c, const brdf::Directions& d) {
+        return [model = model_from(c), d](const glm::dvec3& l) {
+            brdf::Directions at = d;
+            at.l = l;
+            return brdf::evaluate(model, at);
+        };
+    };
     Reference r;
-    r.shade = [model_from](const ShadingInput& in, const ReferenceContext& c) {
-        const glm::dvec3 l = radiance(model_from(c), directions(in), c.number("LightIrradiance"));
+    r.shade = [model_from, alpha_from, towards](const ShadingInput& in, const ReferenceContext& c) {
+        const brdf::Directions d = directions(in);
+        const glm::dvec3 l = light_is_sized(in) ? c.number("LightIrradiance") * area_light_brdf(in, d, towards(c, d), alpha_from(c))
+                                                : radiance(model_from(c), d, c.number("LightIrradiance"));
         return std::array<double, 4>{l.r, l.g, l.b, 1.0};
     };
     // The tolerance is for radiances of order 1; float's rounding is relative, so above 1 it grows
-    // with the pixel's value (a bright light or a white highlight reaches tens).
-    r.slack = [model_from, tolerance](const ShadingInput& in, const ReferenceContext& c) {
+    // with the pixel's value (a bright light or a white highlight reaches tens). Under a sized light
+    // the lobe directions that pass within float's reach of its outline may count or not.
+    r.slack = [model_from, alpha_from, towards, tolerance](const ShadingInput& in, const ReferenceContext& c) {
         const auto model = model_from(c);
         const brdf::Directions d = directions(in);
         const double irradiance = c.number("LightIrradiance");
+        if (light_is_sized(in)) {
+            // A sharp lobe amplifies float's rounding of each direction's cosines (~1e-7) by its exponent,
+            // about 2/α² for a GGX width α: that part of the value may move.
+            double edge = 0;
+            const glm::dvec3 value = glm::abs(irradiance * area_light_brdf(in, d, towards(c, d), alpha_from(c), &edge));
+            const double alpha = std::clamp(alpha_from(c), 0.001, 1.0), brightest = std::max({value.r, value.g, value.b});
+            return irradiance * edge + brightest * 1e-7 * 2.0 / (alpha * alpha) + tolerance * std::max(0.0, brightest - 1.0);
+        }
         const glm::dvec3 value = glm::abs(radiance(model, d, irradiance));
         const double brightest = std::max({value.r, value.g, value.b});
         return tilt_sensitivity(model, d, irradiance) + tolerance * std::max(0.0, brightest - 1.0);
     };
+    // Under a sized light, `compare --ground-truth` measures the estimate against the integral over the light.
+    r.truth = [model_from, towards](const ShadingInput& in, const ReferenceContext& c, unsigned) {
+        const brdf::Directions d = directions(in);
+        const glm::dvec3 l = light_is_sized(in) ? c.number("LightIrradiance") * area_light_brdf_integral(in, d, towards(c, d))
+                                                : radiance(model_from(c), d, c.number("LightIrradiance"));
+        return std::array<double, 4>{l.r, l.g, l.b, 1.0};
+    };
+    r.truth_method = "the integral over the light (midpoint rule over its surface)";
+    r.truth_with_sized_light = true;
+    r.truth_deterministic_without_environment = true;
     r.tolerance = tolerance;
     r.why = std::move(why);
     return r;
@@ -214,8 +244,8 @@ Reference with_environment(Reference point_light, EnvironmentTerm term, Environm
         }
         return total;
     };
-    point_light.truth = [shade, truth](const ShadingInput& in, const ReferenceContext& c, unsigned seed) {
-        std::array<double, 4> value = shade(in, c);
+    point_light.truth = [light = point_light.truth, truth](const ShadingInput& in, const ReferenceContext& c, unsigned seed) {
+        std::array<double, 4> value = light(in, c, seed);
         if (const auto environment = EnvironmentLookup::from(c)) {
             const glm::dvec3 e = truth(*environment, directions(in), c, seed);
             for (int k = 0; k < 3; ++k) value[static_cast<size_t>(k)] += e[k];
@@ -264,7 +294,7 @@ Reference sampled_environment(ModelFrom model_from, AlphaFrom alpha_from) {
     };
     const auto alpha = [alpha_from](const ReferenceContext& c) { return std::clamp(alpha_from(c), 0.001, 1.0); };
     return with_environment(
-        make(model_from, 1e-4, kWhy),
+        make(model_from, alpha, 1e-4, kWhy),
         [value_towards, alpha](const EnvironmentLookup& environment, const brdf::Directions& d, const ReferenceContext& c, double* seam) {
             return environment.light(d, value_towards(c, d), alpha(c), seam);
         },
@@ -277,8 +307,9 @@ Reference sampled_environment(ModelFrom model_from, AlphaFrom alpha_from) {
 
 std::map<std::string, Reference> brdf_references() {
     std::map<std::string, Reference> all;
-    all.emplace("Lambert", with_environment(make(lambert, 1e-4, kWhy), lambert_environment, lambert_truth));
-    all.emplace("PBR", with_environment(make(pbr, 1e-4, kWhy), pbr_environment, pbr_truth));
+    all.emplace("Lambert", with_environment(make(lambert, [](const ReferenceContext&) { return 1.0; }, 1e-4, kWhy), lambert_environment, lambert_truth));
+    all.emplace("PBR", with_environment(make(pbr, [](const ReferenceContext& c) { return std::pow(c.number("Roughness"), 2.0); }, 1e-4, kWhy),
+                                        pbr_environment, pbr_truth));
     // The sampled GGX widths environment_light() gets in analytic.fx: a lobe of similar size (Walter's
     // Blinn-Phong correspondence, the Phong lobe about r being about four times the exponent about h).
     all.emplace("ModifiedPhong", sampled_environment(modified_phong, [](const ReferenceContext& c) { return std::sqrt(2.0 / (4.0 * c.number("PhongExponent") + 2.0)); }));

@@ -69,6 +69,8 @@ struct Reference {
     std::string truth_method = "the Monte Carlo integral";  // what `truth` computes, as compare names it
     // `truth` integrates a sphere light too: it runs without an environment when the light has a size.
     bool truth_with_sized_light = false;
+    // Without an environment `truth` has no noise of its own (a quadrature, not Monte Carlo): computed once.
+    bool truth_deterministic_without_environment = false;
     // Whether the truth measures an approximation of its own in this context even without an environment
     // or a sized light (a film's thickness spread); empty: no.
     std::function<bool(const ReferenceContext&)> truth_wanted;
