@@ -93,13 +93,13 @@ FlatLightView flat_light_view(vec3 position) {
     return f;
 }
 
-// The light's radiance along unit `direction` from the view's point, its image blurred by an angle
-// `width`: the outline ramped linearly over `width`, divided by the light the ramp adds. `disc`:
-// flat_light_is_disc(), passed as a constant where a loop calls this (llvmpipe runs both sides of a
-// branch in a loop).
-float flat_light_radiance(FlatLightView f, vec3 direction, float width, bool disc) {
+// The angle (a chord between unit directions) from unit `direction` to the nearest point of the
+// light's outline, seen from the view's point: positive inside, -1e30 where the ray misses the
+// light's emitting side. `disc`: flat_light_is_disc(), passed as a constant where a loop calls this
+// (llvmpipe runs both sides of a branch in a loop).
+float flat_light_angle(FlatLightView f, vec3 direction, bool disc) {
     float towards = -dot(direction, LightFrame[2]);
-    if (towards <= 0.0 || f.height <= 0.0) return 0.0;
+    if (towards <= 0.0 || f.height <= 0.0) return -1e30;
     float t = f.height / towards;
     vec2 q = f.below + t * vec2(dot(direction, LightFrame[0]), dot(direction, LightFrame[1]));
     float inside;
@@ -114,14 +114,25 @@ float flat_light_radiance(FlatLightView f, vec3 direction, float width, bool dis
         else if (beyond.x > beyond.y) { inside = -beyond.x; across = vec2(s.x, 0.0); }
         else { inside = -beyond.y; across = vec2(0.0, s.y); }
     }
-    // The angle to the outline's nearest point, as the chord between unit directions (the in-plane
-    // distance over t would vanish for rays that graze the light's plane).
+    // As the chord between unit directions (the in-plane distance over t would vanish for rays that
+    // graze the light's plane).
     vec2 edge = q + inside * across - f.below;
-    float angle = sign(inside) * length(direction - normalize(edge.x * LightFrame[0] + edge.y * LightFrame[1] - f.height * LightFrame[2]));
+    return sign(inside) * length(direction - normalize(edge.x * LightFrame[0] + edge.y * LightFrame[1] - f.height * LightFrame[2]));
+}
+
+// The radiance inside the light's image blurred by an angle `width` (the outline ramped linearly over
+// `width`), divided by the light the ramp adds so that the blurred light keeps its energy.
+float flat_light_ramp_scale(FlatLightView f, float width, bool disc) {
+    float ramped = flat_light_offset_integral(f.half_angles, min(0.5 * width, min(f.half_angles.x, f.half_angles.y)), 0.5 * width, disc) / width;
+    return ramped > 0.0 ? LightRadiance * f.sharp / ramped : 0.0;
+}
+
+// The light's radiance along unit `direction` from the view's point, its image blurred by `width`.
+float flat_light_radiance(FlatLightView f, vec3 direction, float width, bool disc) {
+    float angle = flat_light_angle(f, direction, disc);
     if (width <= 0.0) return angle >= 0.0 ? LightRadiance : 0.0;
     float ramp = clamp(0.5 + angle / width, 0.0, 1.0);
-    float ramped = flat_light_offset_integral(f.half_angles, min(0.5 * width, min(f.half_angles.x, f.half_angles.y)), 0.5 * width, disc) / width;
-    return ramped > 0.0 ? LightRadiance * ramp * f.sharp / ramped : 0.0;
+    return ramp > 0.0 ? ramp * flat_light_ramp_scale(f, width, disc) : 0.0;
 }
 
 // The sphere light (cd.fx's orders, the films' mirror image) measured in chords (no inverse
@@ -133,15 +144,20 @@ float light_edge_chord(float sin_alpha) {
     return s * sqrt(2.0 / (1.0 + sqrt(1.0 - s * s)));
 }
 
-float sphere_light_radiance(float chord, float edge, float width) {
+// Inside the light's image (where the ramp is 1): 1 / (2π ∫ p(c) cos δ c dc).
+float sphere_light_ramp_scale(float edge, float width) {
     float a = edge - 0.5 * width, b = edge + 0.5 * width;
-    if (chord >= b) return 0.0;
-    float profile = clamp((b - chord) / width, 0.0, 1.0);
     float moment = a >= 0.0 ? a * a / 2.0 - a * a * a * a / 8.0 +
                                   width * (a / 2.0 + width / 6.0 - a * a * a / 4.0 - a * a * width / 4.0 - a * width * width / 8.0 -
                                            width * width * width / 40.0)
                             : (b * b * b / 6.0 - b * b * b * b * b / 40.0) / width;
-    return moment > 0.0 ? profile / (2.0 * 3.14159265358979323846 * moment) : 0.0;
+    return moment > 0.0 ? 1.0 / (2.0 * 3.14159265358979323846 * moment) : 0.0;
+}
+
+float sphere_light_radiance(float chord, float edge, float width) {
+    float b = edge + 0.5 * width;
+    if (chord >= b) return 0.0;
+    return clamp((b - chord) / width, 0.0, 1.0) * sphere_light_ramp_scale(edge, width);
 }
 
 

@@ -42,6 +42,8 @@ uniform float PitFraction < string UIName = "Pit width"; float UIMin = 0.05; flo
                             string UIHelp = "Part of each track period the pits fill: how the rainbow light is shared between the first, second, third ... orders"; > = 0.35;
 uniform int EnvironmentBand < string UIName = "Environment band"; int UIMin = 1; int UIMax = 50; string UIUnits = "nm"; string UIGroup = "Diffraction orders";
                                string UIHelp = "Under --environment sky or studio: each order looks up the surroundings once per band of this many nm (1: at every sample; 10: the sun's rainbow image moves 0.4 degrees per band in the first order)"; > = 10;
+uniform int LampBand < string UIName = "Lamp band"; int UIMin = 1; int UIMax = 32; string UIUnits = "nm"; string UIGroup = "Diffraction orders";
+                        string UIHelp = "Under a large light (a ceiling panel, a window) each order finds the light's edge at both ends of a band of this many nm and follows it linearly between: large lights cost about what small ones do (1: at every sample; small lights always are)"; > = 16;
 uniform float Lamp < string UIName = "Lamp"; float UIMin = 0; float UIMax = 4; float UIStep = 0.05; string UIGroup = "Diffraction orders";
                      string UIHelp = "Scales the scene's light (0: the disc is lit by the environment alone, --environment sky or studio). A scene light intensity (--light-intensity, Scene tab) sets it: E / (π Y) for the light spectrum's luminance Y";
                      string SceneLight = "spectral-brightness"; > = 1.0;
@@ -198,50 +200,146 @@ GLSLShader GratingFS {
 // Orders past 32 are not drawn: with d up to 5000 nm, light of 360 nm has no more than 28.
 const int kMaxOrder = 32;
 
+// sinc²(m a) and its sums over m = 1..k: the weights and shares of the orders m != 0 (symmetric in m),
+// filled once per fragment (globals: an array passed to a function is copied at every call).
+float order_weight[kMaxOrder + 1], order_share[kMaxOrder + 1];
+
 float sinc_squared_weight(int m) {
     float a = PI * float(m) * PitFraction;
     return m == 0 ? 1.0 : pow(sin(a) / a, 2.0);
+}
+
+// The scene's lamp through the orders at wavelength nm: every order whose direction can fall on the
+// light (|l_x - c_x| <= |l - c|), looked up.
+float lamp_radiance(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, vec3 view, vec3 light, float edge, float view_spread, float turn_spread,
+                    int nm) {
+    float tracks = float(max(Tracks, 1)), reach = sqrt(max(1.0 - view.y * view.y, 0.0)), spacing = max(TrackSpacing, 1.0);
+    float ratio = float(nm) / spacing, orders_per_unit = spacing / float(nm);  // λ / d and d / λ
+    // The propagating orders: |m λ/d - v_x|² + v_y² < 1.
+    int first = clamp(int(floor((view.x - reach) * orders_per_unit)) + 1, -kMaxOrder, 0);
+    int last = clamp(int(ceil((view.x + reach) * orders_per_unit)) - 1, 0, kMaxOrder);
+    float others = order_share[-first] + order_share[last];
+    float widest = ratio / tracks + view_spread + float(max(-first, last)) * ratio * turn_spread;
+    float near = edge + 0.5 * widest;
+    int from = max(first, int(ceil((view.x + light.x - near) * orders_per_unit)));
+    int to = min(last, int(floor((view.x + light.x + near) * orders_per_unit)));
+    float radiance = 0.0;
+    for (int m = from; m <= to; ++m) {
+        vec2 tangential = vec2(float(m) * ratio - view.x, -view.y);
+        float z2 = 1.0 - dot(tangential, tangential);
+        if (z2 <= 0.0) continue;
+        vec3 incidence = tangential.x * d.across + tangential.y * d.along + sqrt(z2) * d.n;
+        float width = ratio / tracks + view_spread + float(abs(m)) * ratio * turn_spread;
+        float efficiency = m == 0 ? (others > 0.0 ? ZeroOrder : 1.0) : (1.0 - ZeroOrder) * order_weight[abs(m)] / others;
+        radiance += efficiency * (flat_lamp ? flat_light_radiance(flat_view, incidence, width, disc) : sphere_light_radiance(length(incidence - d.l), edge, width));
+    }
+    return radiance;
+}
+
+// Order m at the wavelength of `ratio` = λ / d (`others`: the propagating orders' summed weights there)
+// as a band records it: x the ramp's value 0.5 + angle / width (the angle from the light's outline,
+// inside positive, -4 where the order misses), z its radiance inside (efficiency included), w 1 where
+// the order propagates.
+vec4 lamp_order_record(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, vec3 view, float edge, float view_spread, float turn_spread,
+                       int m, float ratio, float others) {
+    float width = ratio / float(max(Tracks, 1)) + view_spread + float(abs(m)) * ratio * turn_spread;
+    vec2 tangential = vec2(float(m) * ratio - view.x, -view.y);
+    float z2 = 1.0 - dot(tangential, tangential);
+    if (z2 <= 0.0) return vec4(0.5 - 4.0 / width, 0.0, 0.0, 0.0);
+    float efficiency = m == 0 ? (others > 0.0 ? ZeroOrder : 1.0) : (1.0 - ZeroOrder) * order_weight[abs(m)] / others;
+    vec3 incidence = tangential.x * d.across + tangential.y * d.along + sqrt(z2) * d.n;
+    if (flat_lamp) return vec4(0.5 + max(flat_light_angle(flat_view, incidence, disc), -4.0) / width, 0.0, efficiency * flat_light_ramp_scale(flat_view, width, disc), 1.0);
+    return vec4(0.5 + max(edge - length(incidence - d.l), -4.0) / width, 0.0, efficiency * sphere_light_ramp_scale(edge, width), 1.0);
+}
+
+// The propagating orders' summed weights at λ / d = ratio.
+float order_shares(vec3 view, float ratio) {
+    float reach = sqrt(max(1.0 - view.y * view.y, 0.0));
+    int first = clamp(int(floor((view.x - reach) / ratio)) + 1, -kMaxOrder, 0);
+    int last = clamp(int(ceil((view.x + reach) / ratio)) - 1, 0, kMaxOrder);
+    return order_share[-first] + order_share[last];
+}
+
+// Under a light much larger than the orders' blur and than a band's step, each order near the light
+// is recorded at both ends of a band of LampBand nm, and its ramp u (0.5 + angle / width, smooth in λ)
+// and its radiance inside s are followed linearly between: its radiance at the band's sample j is
+// (s_a + j ds) clamp(u_a + j du, 0, 1). Where the clamp does not act within the band (the order lies
+// inside, outside or on the ramp throughout) that sums against the band's moments Σ S x̄ j^n (n = 0,
+// 1, 2), gathered with the coating's samples; only where the order crosses the light's edge inside
+// the band is it summed sample by sample.
+void lamp_orders_banded(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, vec3 view, vec3 light, float edge, float view_spread, float turn_spread,
+                        float diffuse, int most, inout vec3 xyz, inout float ybar_sum) {
+    float tracks = float(max(Tracks, 1)), spacing = max(TrackSpacing, 1.0), centre = view.x + light.x, strength = Reflectance * Lamp;
+    int step = max(Steps, 1), last_sample = max(Upper - Lower, 0) / step, per_band = max(LampBand / step, 1);
+    vec3 lamp = vec3(0.0);
+    for (int k0 = 0; k0 <= last_sample; k0 += per_band) {
+        int k1 = min(k0 + per_band, last_sample), end = k1 == last_sample ? k1 : k1 - 1;
+        // The coating, and the band's moments of the light spectrum times the CMFs.
+        vec3 moment0 = vec3(0.0), moment1 = vec3(0.0), moment2 = vec3(0.0);
+        for (int k = k0; k <= end; ++k) {
+            int nm = Lower + k * step;
+            vec3 cmf = cmf_at(nm), lit = spectrum_at(LightSpectrum, nm) * cmf;
+            float j = float(k - k0);
+            xyz += lit * SubstrateWeight * spectrum_at(SubstrateSpectrum, nm) * diffuse;
+            ybar_sum += cmf.y;
+            moment0 += lit;
+            moment1 += lit * j;
+            moment2 += lit * (j * j);
+        }
+        float ra = float(Lower + k0 * step) / spacing, rb = float(Lower + k1 * step) / spacing;
+        float near = edge + 0.5 * (rb / tracks + view_spread + float(most) * rb * turn_spread);
+        float low = centre - near, high = centre + near;
+        int from = max(int(ceil(min(low / ra, low / rb))), -kMaxOrder), to = min(int(floor(max(high / ra, high / rb))), kMaxOrder);
+        float others_a = order_shares(view, ra), others_b = order_shares(view, rb), span = float(max(k1 - k0, 1));
+        for (int m = from; m <= to; ++m) {
+            vec4 a = lamp_order_record(flat_lamp, disc, d, flat_view, view, edge, view_spread, turn_spread, m, ra, others_a);
+            vec4 b = lamp_order_record(flat_lamp, disc, d, flat_view, view, edge, view_spread, turn_spread, m, rb, others_b);
+            if (a.w == 0.0) a.x = b.x;  // an order that stops propagating in the band fades out
+            if (b.w == 0.0) b.x = a.x;
+            float du = (b.x - a.x) / span, ds = (b.z - a.z) / span, lowest = min(a.x, b.x), highest = max(a.x, b.x);
+            if (highest <= 0.0) continue;
+            if (lowest >= 1.0) {
+                lamp += a.z * moment0 + ds * moment1;
+            } else if (lowest >= 0.0 && highest <= 1.0) {
+                lamp += (a.z * a.x) * moment0 + (a.z * du + ds * a.x) * moment1 + (ds * du) * moment2;
+            } else {
+                for (int k = k0; k <= end; ++k) {
+                    int nm = Lower + k * step;
+                    float j = float(k - k0);
+                    lamp += ((a.z + j * ds) * clamp(a.x + j * du, 0.0, 1.0) * spectrum_at(LightSpectrum, nm)) * cmf_at(nm);
+                }
+            }
+        }
+    }
+    xyz += strength * lamp;
 }
 
 // The scene's lamp through the orders at every sampled nm (into xyz and ybar_sum). `flat_lamp` and
 // `disc` are constants at each call, so that each call compiles to its own light's code: llvmpipe
 // runs both sides of a branch inside a loop.
 void lamp_orders(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, vec3 view, vec3 light, float edge, float view_spread, float turn_spread,
-                 float weights[kMaxOrder + 1], float shares[kMaxOrder + 1], float diffuse, inout vec3 xyz, inout float ybar_sum) {
+                 float diffuse, inout vec3 xyz, inout float ybar_sum) {
     float tracks = float(max(Tracks, 1)), reach = sqrt(max(1.0 - view.y * view.y, 0.0)), spacing = max(TrackSpacing, 1.0);
     // Every order leaves with the along-track component -v_y: none meets the light unless that lies
     // within `near` of the light's l_y (|l_y - c_y| <= |l - c|) for the widest order at the longest
     // wavelength. Most pixels lie outside that sector and skip the orders.
     float longest = float(Upper) / spacing;
     int most = min(int(ceil((abs(view.x) + reach) * spacing / float(max(Lower, 1)))), kMaxOrder);
-    bool lit = view.z > 0.0 && abs(view.y + light.y) <= edge + 0.5 * (longest / tracks + view_spread + float(most) * longest * turn_spread);
+    float widest = longest / tracks + view_spread + float(most) * longest * turn_spread;
+    bool lit = view.z > 0.0 && abs(view.y + light.y) <= edge + 0.5 * widest;
     if (!lit) {
         for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) add_sample(xyz, ybar_sum, nm, 0.0, diffuse);
         return;
     }
-    for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
-        float ratio = float(nm) / spacing, orders_per_unit = spacing / float(nm);  // λ / d and d / λ
-        // The propagating orders: |m λ/d - v_x|² + v_y² < 1.
-        int first = clamp(int(floor((view.x - reach) * orders_per_unit)) + 1, -kMaxOrder, 0);
-        int last = clamp(int(ceil((view.x + reach) * orders_per_unit)) - 1, 0, kMaxOrder);
-        float others = shares[-first] + shares[last];
-        float widest = ratio / tracks + view_spread + float(max(-first, last)) * ratio * turn_spread;
-        // Only orders whose direction can fall on the light: |l_x - c_x| <= |l - c|.
-        float near = edge + 0.5 * widest;
-        int from = max(first, int(ceil((view.x + light.x - near) * orders_per_unit)));
-        int to = min(last, int(floor((view.x + light.x + near) * orders_per_unit)));
-        float radiance = 0.0;
-        for (int m = from; m <= to; ++m) {
-            vec2 tangential = vec2(float(m) * ratio - view.x, -view.y);
-            float z2 = 1.0 - dot(tangential, tangential);
-            if (z2 <= 0.0) continue;
-            vec3 incidence = tangential.x * d.across + tangential.y * d.along + sqrt(z2) * d.n;
-            float width = ratio / tracks + view_spread + float(abs(m)) * ratio * turn_spread;
-            float efficiency = m == 0 ? (others > 0.0 ? ZeroOrder : 1.0) : (1.0 - ZeroOrder) * weights[abs(m)] / others;
-            radiance += efficiency * (flat_lamp ? flat_light_radiance(flat_view, incidence, width, disc) : sphere_light_radiance(length(incidence - d.l), edge, width));
-        }
-        add_sample(xyz, ybar_sum, nm, Reflectance * radiance * Lamp, diffuse);
+    // A light twice the orders' blur and a band's step: its edge followed through bands.
+    float size = flat_lamp ? min(flat_view.half_angles.x, flat_view.half_angles.y) : edge;
+    int per_band = max(LampBand / max(Steps, 1), 1);
+    if (per_band > 1 && size > 2.0 * max(widest, float(most * per_band * max(Steps, 1)) / spacing)) {
+        lamp_orders_banded(flat_lamp, disc, d, flat_view, view, light, edge, view_spread, turn_spread, diffuse, most, xyz, ybar_sum);
+        return;
     }
+    for (int nm = Lower; nm <= Upper; nm += max(Steps, 1))
+        add_sample(xyz, ybar_sum, nm, Reflectance * lamp_radiance(flat_lamp, disc, d, flat_view, view, light, edge, view_spread, turn_spread, nm) * Lamp, diffuse);
 }
 
 GLSLShader OrdersFS {
@@ -263,12 +361,10 @@ GLSLShader OrdersFS {
         // spread over that besides its coherence width.
         float view_spread = length(dFdxFine(d.v)) + length(dFdyFine(d.v));
         float turn_spread = length(dFdxFine(d.across)) + length(dFdyFine(d.across));
-        // sinc²(m a) and its sums over m = 1..k: the shares of the orders m != 0 (symmetric in m).
-        float weights[kMaxOrder + 1], shares[kMaxOrder + 1];
-        weights[0] = shares[0] = 0.0;
+        order_weight[0] = order_share[0] = 0.0;
         for (int m = 1; m <= kMaxOrder; ++m) {
-            weights[m] = sinc_squared_weight(m);
-            shares[m] = shares[m - 1] + weights[m];
+            order_weight[m] = sinc_squared_weight(m);
+            order_share[m] = order_share[m - 1] + order_weight[m];
         }
         float diffuse = max(dot(d.n, d.l), 0.0) * Lamp;
         if (flat_lamp) diffuse = flat_light_factors(fs_in.world_position, d.n, d.v, 1.0, false).x * Lamp;
@@ -276,9 +372,9 @@ GLSLShader OrdersFS {
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
         FlatLightView flat_view = flat_light_view(fs_in.world_position);
-        if (flat_lamp && flat_light_is_disc()) lamp_orders(true, true, d, flat_view, view, light, edge, view_spread, turn_spread, weights, shares, diffuse, xyz, ybar_sum);
-        else if (flat_lamp) lamp_orders(true, false, d, flat_view, view, light, edge, view_spread, turn_spread, weights, shares, diffuse, xyz, ybar_sum);
-        else lamp_orders(false, false, d, flat_view, view, light, edge, view_spread, turn_spread, weights, shares, diffuse, xyz, ybar_sum);
+        if (flat_lamp && flat_light_is_disc()) lamp_orders(true, true, d, flat_view, view, light, edge, view_spread, turn_spread, diffuse, xyz, ybar_sum);
+        else if (flat_lamp) lamp_orders(true, false, d, flat_view, view, light, edge, view_spread, turn_spread, diffuse, xyz, ybar_sum);
+        else lamp_orders(false, false, d, flat_view, view, light, edge, view_spread, turn_spread, diffuse, xyz, ybar_sum);
         float reach = sqrt(max(1.0 - view.y * view.y, 0.0)), spacing = max(TrackSpacing, 1.0);
         // The surroundings: every propagating order mirrors the environment's spectral radiance
         // L = Σ_k w_k S_k from the direction the grating equation picks for it. The direction moves
@@ -302,13 +398,13 @@ GLSLShader OrdersFS {
             float ratio = nm_sum / count / spacing, orders_per_unit = 1.0 / ratio;
             int first = clamp(int(floor((view.x - reach) * orders_per_unit)) + 1, -kMaxOrder, 0);
             int last = clamp(int(ceil((view.x + reach) * orders_per_unit)) - 1, 0, kMaxOrder);
-            float others = shares[-first] + shares[last];
+            float others = order_share[-first] + order_share[last];
             for (int m = first; m <= last; ++m) {
                 vec2 tangential = vec2(float(m) * ratio - view.x, -view.y);
                 float z2 = 1.0 - dot(tangential, tangential);
                 if (z2 <= 0.0) continue;
                 vec3 incidence = tangential.x * d.across + tangential.y * d.along + sqrt(z2) * d.n;
-                float efficiency = m == 0 ? (others > 0.0 ? ZeroOrder : 1.0) : (1.0 - ZeroOrder) * weights[abs(m)] / others;
+                float efficiency = m == 0 ? (others > 0.0 ? ZeroOrder : 1.0) : (1.0 - ZeroOrder) * order_weight[abs(m)] / others;
                 vec3 w = spectral_environment_weights(incidence);
                 xyz += Reflectance * efficiency * vec3(dot(w, band_x), dot(w, band_y), dot(w, band_z));
             }

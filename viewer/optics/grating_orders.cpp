@@ -50,10 +50,8 @@ double light_edge_chord(double sin_alpha) {
     return s * std::sqrt(2.0 / (1.0 + c));  // 2 sin(α/2) = √(2 (1 − cos α)), with 1 − cos α = s² / (1 + cos α)
 }
 
-double sphere_light_radiance(double chord, double edge_chord, double width) {
+double sphere_light_ramp_scale(double edge_chord, double width) {
     const double a = edge_chord - 0.5 * width, b = edge_chord + 0.5 * width;
-    if (chord >= b) return 0.0;
-    const double profile = width > 0 ? std::clamp((b - chord) / width, 0.0, 1.0) : (chord < edge_chord ? 1.0 : 0.0);
     // ∫ p(c) (c − c³/2) dc: the full part up to a, then the ramp w ∫₀¹ (1 − t) f(a + t w) dt expanded
     // (no differences of nearly equal terms); from the centre, ∫₀ᵇ (b − c)/w (c − c³/2) dc.
     double moment = 0;
@@ -62,7 +60,14 @@ double sphere_light_radiance(double chord, double edge_chord, double width) {
                  width * (a / 2 + width / 6 - a * a * a / 4 - a * a * width / 4 - a * width * width / 8 - width * width * width / 40);
     else
         moment = (b * b * b / 6 - b * b * b * b * b / 40) / width;
-    return moment > 0 ? profile / (2.0 * std::numbers::pi * moment) : 0.0;
+    return moment > 0 ? 1.0 / (2.0 * std::numbers::pi * moment) : 0.0;
+}
+
+double sphere_light_radiance(double chord, double edge_chord, double width) {
+    const double b = edge_chord + 0.5 * width;
+    if (chord >= b) return 0.0;
+    const double profile = width > 0 ? std::clamp((b - chord) / width, 0.0, 1.0) : (chord < edge_chord ? 1.0 : 0.0);
+    return profile * sphere_light_ramp_scale(edge_chord, width);
 }
 
 }  // namespace fxview::optics

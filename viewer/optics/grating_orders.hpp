@@ -53,5 +53,7 @@ double light_edge_chord(double sin_alpha);
 // exact irradiance 2π ∫ p(c) cos δ c dc, cos δ = 1 - c²/2. Sharp (w -> 0): 1 / (π sin²α) inside the
 // disc; a point light (e = 0): a cone of chord radius w/2 that holds the same irradiance.
 double sphere_light_radiance(double chord, double edge_chord, double width);
+// The same where the ramp is 1 (inside the light's image): 1 / (2π ∫ p(c) cos δ c dc).
+double sphere_light_ramp_scale(double edge_chord, double width);
 
 }  // namespace fxview::optics

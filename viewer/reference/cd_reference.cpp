@@ -112,24 +112,130 @@ std::optional<EnvironmentLookup> surroundings_of(const ReferenceContext& c) {
     return environment;
 }
 
-double orders_radiance(const Disc& d, const ShadingInput& in, const ReferenceContext& c, int nm, double offset) {
-    const optics::GratingOrderModel model = order_model(c);
-    const glm::dvec3 view(glm::dot(d.v, d.across) + offset, glm::dot(d.v, d.along), glm::dot(d.v, d.n));
-    if (view.z <= 0) return 0.0;
-    const auto [range, efficiencies] = propagating(view, nm, model);
+// What the shader's lamp loop shares per pixel (cd.fx lamp_orders): the view and the light in the
+// grating's frame, the chord `edge` that bounds the light's reach, its smallest angular half size,
+// the most orders any sample has, and the orders' blur.
+struct LampView {
+    glm::dvec3 view{0.0};
+    double centre = 0, edge = 0, size = 0, tracks = 1, spacing = 1600;
+    int most = 0, step = 1, per_band = 1, last_sample = 0, lower = 360;
+    double longest = 0, widest = 0;
+};
+
+LampView lamp_view(const Disc& d, const ShadingInput& in, const ReferenceContext& c, double offset) {
+    LampView w;
+    w.view = {glm::dot(d.v, d.across) + offset, glm::dot(d.v, d.along), glm::dot(d.v, d.n)};
+    w.centre = w.view.x + glm::dot(d.l, d.across);
+    const double distance = glm::length(in.light - in.position);
+    const bool flat = in.lamp.is_flat();
+    const double reach = flat ? (in.lamp.shape == scene::LightShape::Disc ? in.lamp.half_size.x : glm::length(in.lamp.half_size)) : std::max(in.light_radius, 0.0);
+    w.edge = flat && reach >= distance ? 2.0 : optics::light_edge_chord(reach / distance);
+    if (flat) {
+        const glm::dvec2 h = scene::flat_light_angular_half_size(in.lamp, in.position);
+        w.size = std::min(h.x, h.y);
+    } else {
+        w.size = w.edge;
+    }
+    w.tracks = std::max(1.0, c.number("Tracks"));
+    w.spacing = std::max(c.number("TrackSpacing"), 1.0);
+    w.lower = static_cast<int>(c.number("Lower"));
+    const int upper = static_cast<int>(c.number("Upper"));
+    w.step = std::max(static_cast<int>(c.number("Steps")), 1);
+    w.last_sample = std::max(upper - w.lower, 0) / w.step;
+    w.per_band = std::max(static_cast<int>(c.number("LampBand")) / w.step, 1);
+    const double reach_v = std::sqrt(std::max(1.0 - w.view.y * w.view.y, 0.0));
+    w.most = std::min(static_cast<int>(std::ceil((std::abs(w.view.x) + reach_v) * w.spacing / std::max(w.lower, 1))), kMaxOrder);
+    w.longest = upper / w.spacing;
+    w.widest = w.longest / w.tracks + in.footprint.x + w.most * w.longest * in.footprint.y;
+    return w;
+}
+
+// Whether the shader follows the light's edge through bands (a light much larger than the orders'
+// blur and than a band's step), and how near the decision is (relative).
+std::pair<bool, double> lamp_banded(const LampView& w) {
+    const double threshold = 2.0 * std::max(w.widest, w.most * w.per_band * w.step / w.spacing);
+    return {w.per_band > 1 && w.size > threshold, std::abs(w.size - threshold) / std::max(threshold, 1e-30)};
+}
+
+// One order at one wavelength as the shader records it: its ramp u = 0.5 + angle / width (the angle
+// from the light's outline, inside positive, −4 where the order misses), its radiance inside
+// (efficiency included); `valid` false where the order does not propagate.
+struct OrderRecord {
+    double ramp = 0, scale = 0;
+    bool valid = false;
+};
+
+OrderRecord order_record(const Disc& d, const ShadingInput& in, const optics::GratingOrderModel& model, const LampView& w, int m, double nm, double offset) {
+    OrderRecord r;
+    const double ratio = nm / model.spacing_nm, width = ratio / w.tracks + in.footprint.x + std::abs(m) * ratio * in.footprint.y;
+    r.ramp = 0.5 - 4.0 / width;
+    const auto l = optics::order_incidence(w.view, m, nm, model.spacing_nm);
+    if (!l) return r;
+    const auto [range, efficiencies] = propagating(w.view, nm, model);
+    if (m < range.first || m > range.last) return r;
+    const double efficiency = efficiencies[static_cast<size_t>(m - range.first)];
+    const glm::dvec3 incidence = l->x * d.across + l->y * d.along + l->z * d.n;
+    r.valid = true;
+    double angle = 0;
+    if (in.lamp.is_flat()) {
+        const auto hit = scene::flat_light_hit(in.lamp, in.position, glm::normalize(incidence));
+        angle = hit ? std::max(hit->inside_angle, -4.0) : -4.0;
+        r.scale = efficiency * scene::flat_light_ramp_scale(in.lamp, scene::flat_light_angular_half_size(in.lamp, in.position), width);
+    } else {
+        angle = std::max(w.edge - (glm::length(incidence - d.l) + offset), -4.0);
+        r.scale = efficiency * optics::sphere_light_ramp_scale(w.edge, width);
+    }
+    r.ramp = 0.5 + angle / width;
+    return r;
+}
+
+// Every order at exactly this wavelength.
+double orders_radiance_exact(const Disc& d, const ShadingInput& in, const optics::GratingOrderModel& model, const LampView& w, int nm, double offset) {
+    if (w.view.z <= 0) return 0.0;
+    const auto [range, efficiencies] = propagating(w.view, nm, model);
     const double edge = optics::light_edge_chord(std::max(in.light_radius, 0.0) / glm::length(in.light - in.position));
-    const double ratio = nm / model.spacing_nm, tracks = std::max(1.0, c.number("Tracks"));
+    const double ratio = nm / model.spacing_nm;
     double radiance = 0;
     for (int m = range.first; m <= range.last; ++m) {
-        const auto l = optics::order_incidence(view, m, nm, model.spacing_nm);
+        const auto l = optics::order_incidence(w.view, m, nm, model.spacing_nm);
         if (!l) continue;
         const double efficiency = efficiencies[static_cast<size_t>(m - range.first)];
         const glm::dvec3 incidence = l->x * d.across + l->y * d.along + l->z * d.n;
-        const double width = ratio / tracks + in.footprint.x + std::abs(m) * ratio * in.footprint.y;
+        const double width = ratio / w.tracks + in.footprint.x + std::abs(m) * ratio * in.footprint.y;
         radiance += efficiency * (in.lamp.is_flat() ? scene::flat_light_radiance(in.lamp, in.position, glm::normalize(incidence), width)
                                                     : optics::sphere_light_radiance(glm::length(incidence - d.l) + offset, edge, width));
     }
-    return radiance * c.number("Lamp");
+    return radiance;
+}
+
+// The band of samples that holds nm: each order near the light at its two ends (as the shader picks
+// them), its ramp and radiance inside interpolated linearly between the two records.
+double orders_radiance_banded(const Disc& d, const ShadingInput& in, const optics::GratingOrderModel& model, const LampView& w, int nm, double offset) {
+    if (w.view.z <= 0) return 0.0;
+    const int k = (nm - w.lower) / w.step, k0 = k / w.per_band * w.per_band, k1 = std::min(k0 + w.per_band, w.last_sample);
+    const double na = w.lower + k0 * w.step, nb = w.lower + k1 * w.step, ra = na / model.spacing_nm, rb = nb / model.spacing_nm;
+    const double near = w.edge + 0.5 * (rb / w.tracks + in.footprint.x + w.most * rb * in.footprint.y);
+    const double low = w.centre - near, high = w.centre + near;
+    const int from = std::max(static_cast<int>(std::ceil(std::min(low / ra, low / rb))), -kMaxOrder);
+    const int to = std::min(static_cast<int>(std::floor(std::max(high / ra, high / rb))), kMaxOrder);
+    const double t = static_cast<double>(k - k0) / std::max(k1 - k0, 1);
+    double radiance = 0;
+    for (int m = from; m <= to; ++m) {
+        OrderRecord a = order_record(d, in, model, w, m, na, offset), b = order_record(d, in, model, w, m, nb, offset);
+        if (!a.valid) a.ramp = b.ramp;  // an order that stops propagating in the band fades out
+        if (!b.valid) b.ramp = a.ramp;
+        radiance += (a.scale + t * (b.scale - a.scale)) * std::clamp(a.ramp + t * (b.ramp - a.ramp), 0.0, 1.0);
+    }
+    return radiance;
+}
+
+enum class LampMode { AsShader, Exact };
+
+double orders_radiance(const Disc& d, const ShadingInput& in, const ReferenceContext& c, int nm, double offset, LampMode mode = LampMode::AsShader) {
+    const optics::GratingOrderModel model = order_model(c);
+    const LampView w = lamp_view(d, in, c, offset);
+    const bool banded = mode == LampMode::AsShader && lamp_banded(w).first;
+    return (banded ? orders_radiance_banded(d, in, model, w, nm, offset) : orders_radiance_exact(d, in, model, w, nm, offset)) * c.number("Lamp");
 }
 
 // The coating's irradiance factor (cos θ for a point): Orders sums a flat lamp over its points as
@@ -141,12 +247,19 @@ double lamp_irradiance(const Disc& d, const ShadingInput& in, bool orders, bool 
 
 // The float error of the directions (normalisations, dot products, the chord's length: a few 1e-7;
 // 2e-6 is generous) can move an order's image edge or an order over the edge of propagation.
+// Where the shader's choice between bands and every sample is that close, float may make either.
 Sample orders_sample(const Disc& d, const ShadingInput& in, const ReferenceContext& c, int nm, bool want_intensity) {
     const double value = orders_radiance(d, in, c, nm, 0.0);
     if (want_intensity) return {value, 0.0};
     double uncertainty = 0;
     for (const double offset : {-2e-6, 2e-6}) uncertainty = std::max(uncertainty, std::abs(orders_radiance(d, in, c, nm, offset) - value));
+    if (lamp_banded(lamp_view(d, in, c, 0.0)).second < 1e-4) uncertainty += std::abs(orders_radiance(d, in, c, nm, 0.0, LampMode::Exact) - value);
     return {value, uncertainty};
+}
+
+// The ground truth: every order at every nm (no bands).
+Sample orders_sample_exact(const Disc& d, const ShadingInput& in, const ReferenceContext& c, int nm, bool) {
+    return {orders_radiance(d, in, c, nm, 0.0, LampMode::Exact), 0.0};
 }
 
 // The surroundings through the orders (cd.fx OrdersFS): per band of EnvironmentBand nm, the band's
@@ -231,7 +344,7 @@ double orders_surroundings_exact(const Disc& d, const ReferenceContext& c, const
 // times the light spectrum) and the stand-in cube map is off.
 enum class Surroundings { Ignored, Diffracted };
 
-Reference make(Diffraction diffraction, Surroundings surroundings = Surroundings::Ignored) {
+Reference make(Diffraction diffraction, Surroundings surroundings = Surroundings::Ignored, Diffraction exact = nullptr) {
     Reference r;
     r.shade = [diffraction, surroundings](const ShadingInput& in, const ReferenceContext& c) {
         const SpectralSetup s = spectral_setup(c);
@@ -268,22 +381,28 @@ Reference make(Diffraction diffraction, Surroundings surroundings = Surroundings
     // The mirrored cube map is read through sRGB decoding and bilinear weights whose precision GL
     // leaves to the implementation (textured.fx's 4e-3), scaled by its weight.
     if (surroundings == Surroundings::Diffracted) {
-        // `compare --ground-truth` under a spectral environment: the same lamp and substrate, every
-        // nm of 360-830, and the surroundings without bands from the environment's model.
-        r.truth = [diffraction, shade = r.shade](const ShadingInput& in, const ReferenceContext& c, unsigned) {
+        // `compare --ground-truth` under a spectral environment or a sized light: the same lamp and
+        // substrate, every order at every nm of 360-830 (no lamp bands), and the surroundings without
+        // bands from the environment's model.
+        r.truth = [exact](const ShadingInput& in, const ReferenceContext& c, unsigned) {
             const std::optional<EnvironmentLookup> environment = surroundings_of(c);
-            if (!environment) return shade(in, c);
             const SpectralSetup s = every_nm_setup(c);
             const int light = static_cast<int>(c.number("LightSpectrum")), substrate = static_cast<int>(c.number("SubstrateSpectrum"));
             const Disc d = disc(in);
             const double diffuse = lamp_irradiance(d, in, true, true) * c.number("Lamp");
-            return to_rgba(integrate(s, true, [&](int nm) {
+            std::array<double, 4> rgba = to_rgba(integrate(s, true, [&](int nm) {
                 return spectral::packed_value(*s.spectra, light, nm) *
-                           (diffraction(d, in, c, nm, true).intensity + c.number("SubstrateWeight") * spectral::packed_value(*s.spectra, substrate, nm) * diffuse) +
-                       orders_surroundings_exact(d, c, *environment, nm);
+                           (exact(d, in, c, nm, true).intensity + c.number("SubstrateWeight") * spectral::packed_value(*s.spectra, substrate, nm) * diffuse) +
+                       (environment ? orders_surroundings_exact(d, c, *environment, nm) : 0.0);
             }), s.mapping);
+            if (!environment) {  // the mirrored cube map stands in for the surroundings, as in the shader
+                const glm::dvec4 mirrored = mirrored_cube(in, c).value * c.number("EnvironmentWeight");
+                for (int i = 0; i < 3; ++i) rgba[static_cast<size_t>(i)] += mirrored[i];
+            }
+            return rgba;
         };
-        r.truth_method = "the orders at every nm mirroring the environment's model (an image: each direction's own uplifted spectrum; no bands, the sun a sharp disc)";
+        r.truth_method = "the orders at every nm (no lamp bands) mirroring the lamp and the environment's model (an image: each direction's own uplifted spectrum; no bands, the sun a sharp disc)";
+        r.truth_with_sized_light = true;
     }
     r.tolerance_for = [surroundings](const ReferenceContext& c) {
         const bool stand_in_off = surroundings == Surroundings::Diffracted && surroundings_of(c);
@@ -303,7 +422,7 @@ std::map<std::string, Reference> cd_references() {
     std::map<std::string, Reference> all;
     all.emplace("Thesis", make(thesis_sample));
     all.emplace("Grating", make(grating_sample));
-    all.emplace("Orders", make(orders_sample, Surroundings::Diffracted));
+    all.emplace("Orders", make(orders_sample, Surroundings::Diffracted, orders_sample_exact));
     return all;
 }
 

@@ -123,17 +123,19 @@ std::optional<FlatLightHit> flat_light_hit(const LightGeometry& light, const glm
     FlatLightHit result;
     result.inside_angle = (inside < 0 ? -1.0 : inside > 0 ? 1.0 : 0.0) *
                           glm::length(direction - glm::normalize(light.centre + edge.x * light.u + edge.y * light.v - position));
+    result.angular_half_size = flat_light_angular_half_size(light, position);
+    return result;
+}
+
+glm::dvec2 flat_light_angular_half_size(const LightGeometry& light, const glm::dvec3& position) {
     // Seen from `position` towards the centre: a disc's ellipse (R/D, R cos/D), a rectangle's sides foreshortened.
     const glm::dvec3 to_centre = light.centre - position;
     const double distance = glm::length(to_centre);
     const glm::dvec3 l = to_centre / distance;
-    if (light.shape == LightShape::Disc)
-        result.angular_half_size = glm::dvec2(light.radius, light.radius * std::max(-glm::dot(l, light.normal), 0.0)) / distance;
-    else
-        result.angular_half_size = glm::dvec2(light.half_size.x * std::sqrt(std::max(1.0 - glm::dot(l, light.u) * glm::dot(l, light.u), 0.0)),
-                                              light.half_size.y * std::sqrt(std::max(1.0 - glm::dot(l, light.v) * glm::dot(l, light.v), 0.0))) /
-                                   distance;
-    return result;
+    if (light.shape == LightShape::Disc) return glm::dvec2(light.radius, light.radius * std::max(-glm::dot(l, light.normal), 0.0)) / distance;
+    return glm::dvec2(light.half_size.x * std::sqrt(std::max(1.0 - glm::dot(l, light.u) * glm::dot(l, light.u), 0.0)),
+                      light.half_size.y * std::sqrt(std::max(1.0 - glm::dot(l, light.v) * glm::dot(l, light.v), 0.0))) /
+           distance;
 }
 
 double flat_light_radiance(const LightGeometry& light, const glm::dvec3& position, const glm::dvec3& direction, double width) {
@@ -142,10 +144,13 @@ double flat_light_radiance(const LightGeometry& light, const glm::dvec3& positio
     if (!(width > 0)) return hit->inside_angle >= 0 ? light.radiance : 0.0;
     const double ramp = std::clamp(0.5 + hit->inside_angle / width, 0.0, 1.0);
     if (ramp <= 0) return 0.0;
-    const glm::dvec2 h = hit->angular_half_size;
+    return ramp * flat_light_ramp_scale(light, hit->angular_half_size, width);
+}
+
+double flat_light_ramp_scale(const LightGeometry& light, glm::dvec2 h, double width) {
     const double sharp = light.shape == LightShape::Disc ? kPi * h.x * h.y : 4.0 * h.x * h.y;
     const double ramped = offset_area_integral(light.shape, h, std::min(0.5 * width, std::min(h.x, h.y)), 0.5 * width) / width;
-    return ramped > 0 ? light.radiance * ramp * sharp / ramped : 0.0;
+    return ramped > 0 ? light.radiance * sharp / ramped : 0.0;
 }
 
 int flat_light_point_count(double wanted, double fewest) {

@@ -56,11 +56,14 @@ struct FlatLightHit {
     glm::dvec2 angular_half_size{0.0};
 };
 std::optional<FlatLightHit> flat_light_hit(const LightGeometry& light, const glm::dvec3& position, const glm::dvec3& direction);
+glm::dvec2 flat_light_angular_half_size(const LightGeometry& light, const glm::dvec3& position);
 
 // The flat light's radiance (per unit intensity) along a direction whose image is blurred by an
 // angle `width`: the edge ramped linearly over `width` about the outline, divided by how much light the
 // ramp adds (so that the blurred light holds the sharp light's energy): cd.fx's orders.
 double flat_light_radiance(const LightGeometry& light, const glm::dvec3& position, const glm::dvec3& direction, double width);
+// The same where the ramp is 1 (inside the image), for a light seen with `angular_half_size`.
+double flat_light_ramp_scale(const LightGeometry& light, glm::dvec2 angular_half_size, double width);
 
 // The quadrature the GPU uses over a flat light: `count` points of equal area (a disc: a sunflower
 // spiral; a rectangle: the Fibonacci lattice), count a Fibonacci number from 34 to 233.
