@@ -43,6 +43,7 @@ run: build
 	  $(FXVIEW) render effects/brdf/analytic.fx --preset effects/brdf/presets/$$metal.json --mesh sphere --size 512x512 --out out/sphere-$$metal.png || exit 1; \
 	done
 	$(FXVIEW) render effects/brdf/analytic.fx --preset effects/brdf/presets/gold.json --set Roughness=0.08 --environment sky:25,4500 --mesh knot --size 512x512 --out out/knot-gold-sky.png
+	$(FXVIEW) render effects/brdf/analytic.fx --preset effects/brdf/presets/gold.json --set Roughness=0.12 --light-shape rectangle --light-size 2,3 --light-position -2,2,3 --mesh sphere --size 512x512 --out out/sphere-gold-window.png
 	$(FXVIEW) compare effects/brdf/analytic.fx --technique PBR --environment studio --ground-truth --size 96x96 --heatmap out/compare-ibl.png
 	$(FXVIEW) render effects/legacy/wavelength.cgfx --mesh knot --size 512x512 --out out/knot-thesis-cg.png
 	$(FXVIEW) render tests/effects/legacy/glow.fx --mesh sphere --size 512x512 --out out/sphere-legacy-glow.png
