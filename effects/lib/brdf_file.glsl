@@ -36,13 +36,14 @@ GLSLShader FxBrdfLitFS {
         // it cannot spread through filtering; BrdfValue keeps the raw value, brdf-check counts them.
         if (any(isnan(f)) || any(isinf(f))) f = vec3(0.0);
         color = vec4(f * LightIrradiance * max(nl, 0.0), 1.0);
-        // The environment's light and a sized scene light, sampled about the mirror direction with a
-        // medium lobe (the file's own lobe is unknown; the estimates are unbiased whatever it is).
+        // The environment's light, sampled about the mirror direction with a medium lobe (the file's
+        // own lobe is unknown; the estimate is unbiased whatever it is), and a sized scene light, whose
+        // lobe directions follow the width measured from the file's BRDF at this pixel.
         vec3 n = normalize(fs_in.normal), v = normalize(CameraPosition - fs_in.world_position);
         vec3 x = fs_in.tangent - n * dot(n, fs_in.tangent);
         if (dot(x, x) < 1e-12) x = cross(n, abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0));
         x = normalize(x);
-        if (scene_light_sized()) color.rgb = LightIrradiance * scene_light_brdf(fs_in.world_position, n, v, x, cross(n, x), 0.3);
+        if (scene_light_sized()) color.rgb = LightIrradiance * scene_light_brdf(fs_in.world_position, n, v, x, cross(n, x), brdf_lobe_width(n, v, x, cross(n, x), 0.3));
         color.rgb += environment_light(n, v, x, cross(n, x), 0.3);
         fx_capture();
     }

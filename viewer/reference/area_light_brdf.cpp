@@ -11,7 +11,8 @@ namespace fxview::reference {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr int kLobeSamples = 64;  // kFxLightLobeSamples
+constexpr int kLobeSamples = 64;    // kFxLightLobeSamples
+constexpr int kCosineSamples = 128;  // kFxLightCosineSamples
 
 // Where a direction meets the light, float knows it to about this angle (a few ulps of the sampled
 // direction's sines and cosines, 1e-6 each, and of the plane's intersection): lobe directions that
@@ -44,11 +45,19 @@ glm::dvec3 lobe_direction(const brdf::Directions& d, int i, double alpha) {
     return 2.0 * glm::dot(d.v, h) * h - d.v;
 }
 
+// Direction i of the cosine-distributed set about n (Hammersley).
+glm::dvec3 cosine_direction(const brdf::Directions& d, int i) {
+    const double u1 = (i + 0.5) / kCosineSamples, u2 = radical_inverse(static_cast<std::uint32_t>(i)), r = std::sqrt(u1);
+    const glm::dvec3 x = d.t, y = glm::cross(d.n, d.t);
+    return r * std::cos(2 * kPi * u2) * x + r * std::sin(2 * kPi * u2) * y + std::sqrt(std::max(0.0, 1.0 - u1)) * d.n;
+}
+
 // The light as seen from the pixel, as the GPU's light_sampling() forms it.
 struct Sampling {
     const scene::LightGeometry* lamp = nullptr;  // a flat light; null: a sphere
     glm::dvec3 position{0.0}, centre{0.0};
     double cos_alpha = 0, versine = 0, radiance = 0, density = 0, solid = 0;
+    double nearness = 0;  // a flat light's area over the squared distance to its nearest point (capped at 2π); a sphere's Ω
 };
 
 Sampling sampling(const ShadingInput& in) {
@@ -61,11 +70,18 @@ Sampling sampling(const ShadingInput& in) {
     if (s.lamp) {
         s.radiance = s.lamp->radiance;
         s.solid = std::min(s.lamp->area() * std::max(-glm::dot(s.centre, s.lamp->normal), 0.0) / distance2, 2 * kPi);
+        const glm::dvec3 from_centre = in.position - s.lamp->centre;
+        const glm::dvec2 below(glm::dot(from_centre, s.lamp->u), glm::dot(from_centre, s.lamp->v));
+        const double outside = s.lamp->shape == scene::LightShape::Disc ? std::max(glm::length(below) - s.lamp->radius, 0.0)
+                                                                          : glm::length(glm::max(glm::abs(below) - s.lamp->half_size, glm::dvec2(0.0)));
+        const double height = glm::dot(from_centre, s.lamp->normal);
+        s.nearness = std::min(s.lamp->area() / std::max(height * height + outside * outside, 1e-12), 2 * kPi);
     } else {
         const double sin2 = std::min(in.light_radius * in.light_radius / distance2, 0.9998);
         s.cos_alpha = std::sqrt(1.0 - sin2);
         s.versine = sin2 / (1.0 + s.cos_alpha);
         s.solid = 2 * kPi * s.versine;
+        s.nearness = s.solid;
         s.radiance = 1.0 / (kPi * sin2);
         s.density = 1.0 / s.solid;
     }
@@ -121,13 +137,18 @@ double light_pdf_along(const Sampling& s, const glm::dvec3& dir, double& margin)
 
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// The balance heuristic's sum with `count` light points; `edge` gathers the terms of lobe directions
-// within float's reach of the outline.
+// The balance heuristic's sum with `count` light points, the lobe's and the cosine's directions
+// counted by their shares; `edge` gathers the terms of directions within float's reach of the outline.
 glm::dvec3 balance_sum(const Sampling& s, int count, const brdf::Directions& d, const BrdfTowards& f, double alpha, double& edge) {
     if (!s.lamp) count = count / 2 * 2;  // a sphere's points come in opposite pairs
-    // The lobe's directions count fully where the light is half again the lobe's solid angle (4π α²),
-    // not at all where the lobe is twice the light's.
-    const double lights = count, lobes = kLobeSamples * std::clamp(s.solid / (4.0 * kPi * alpha * alpha) - 0.5, 0.0, 1.0);
+    // The lobe's directions count by how many of them meet the light (all from 16, none below 4); the
+    // cosine's where the light is near (`nearness` from 0.5 to 1.5).
+    const double lights = count, hits = kLobeSamples * std::min(1.0, s.solid / (4.0 * kPi * alpha * alpha));
+    const double lobes = kLobeSamples * std::clamp((hits - 4.0) / 12.0, 0.0, 1.0);
+    const double cosines = kCosineSamples * std::clamp(s.nearness - 0.5, 0.0, 1.0);
+    const auto denominator = [&](const glm::dvec3& l, double light_pdf) {
+        return lights * light_pdf + lobes * lobe_pdf(d, l, alpha) + cosines * std::max(glm::dot(d.n, l), 0.0) / kPi;
+    };
     glm::dvec3 sum(0.0);
     for (int j = 0; j < count; ++j) {
         double pdf = 0;
@@ -136,23 +157,24 @@ glm::dvec3 balance_sum(const Sampling& s, int count, const brdf::Directions& d, 
         if (nl <= 0 || !(pdf > 0)) continue;
         const glm::dvec3 value = f(l);
         if (!finite(value)) continue;
-        sum += value * (nl * s.radiance / (lights * pdf + lobes * lobe_pdf(d, l, alpha)));
+        sum += value * (nl * s.radiance / denominator(l, pdf));
     }
-    const double share = lobes / kLobeSamples;  // each lobe direction's term counts this much
-    for (int i = 0; i < kLobeSamples && lobes > 0; ++i) {
-        const glm::dvec3 l = lobe_direction(d, i, alpha);
+    // A set's direction that meets the light: its term times the set's share; one within float's reach
+    // of the outline counts as slack (with the density it would have just inside).
+    const auto direction_term = [&](const glm::dvec3& l, double share) {
         const double nl = glm::dot(d.n, l);
         double margin = 1.0;
         const double pdf = nl > 0 ? light_pdf_along(s, l, margin) : 0.0;
-        // A direction just outside counts with the density it would have just inside.
         const double near_pdf = margin < kEdgeAngle && pdf == 0.0 && nl > 0 ? (s.lamp ? 1.0 / std::max(s.solid, 1e-30) : s.density) : pdf;
-        if (nl <= 0 || !(near_pdf > 0)) continue;
+        if (nl <= 0 || !(near_pdf > 0)) return;
         const glm::dvec3 value = f(l);
-        if (!finite(value)) continue;
-        const glm::dvec3 term = share * value * (nl * s.radiance / (lights * near_pdf + lobes * lobe_pdf(d, l, alpha)));
+        if (!finite(value)) return;
+        const glm::dvec3 term = share * value * (nl * s.radiance / denominator(l, near_pdf));
         if (pdf > 0) sum += term;
         if (margin < kEdgeAngle) edge += std::max({std::abs(term.r), std::abs(term.g), std::abs(term.b)});
-    }
+    };
+    for (int i = 0; i < kLobeSamples && lobes > 0; ++i) direction_term(lobe_direction(d, i, alpha), lobes / kLobeSamples);
+    for (int i = 0; i < kCosineSamples && cosines > 0; ++i) direction_term(cosine_direction(d, i), cosines / kCosineSamples);
     return sum;
 }
 
@@ -164,37 +186,70 @@ glm::dvec3 area_light_brdf(const ShadingInput& in, const brdf::Directions& d, co
     if (glm::dot(d.n, d.v) <= 0) return glm::dvec3(0.0);
     const Sampling s = sampling(in);
     alpha = std::clamp(alpha, 0.001, 1.0);
-    // 89 points, 144 where the horizon crosses the light; float may decide either way where it nearly does.
-    const double cos_theta = glm::dot(d.n, s.centre), horizon = cos_theta * cos_theta - s.solid / 3.14159265;
+    // 89 points, 144 where the horizon crosses the light, 233 where the light is near (the shader's
+    // light_sampling); float may decide either way where a test nearly flips: the other count's
+    // difference is slack there.
+    const double cos_theta = glm::dot(d.n, s.centre), horizon = cos_theta * cos_theta - s.solid / 3.14159265, near = s.nearness - 1.5;
+    const auto count = [](double horizon_test, double near_test) { return near_test > 0 ? 233 : horizon_test < 0 ? 144 : 89; };
     double edge = 0;
-    const glm::dvec3 sum = balance_sum(s, horizon < 0 ? 144 : 89, d, f, alpha, edge);
+    const glm::dvec3 sum = balance_sum(s, count(horizon, near), d, f, alpha, edge);
     if (edge_slack) {
-        double other_edge = 0;
-        if (std::abs(horizon) < 1e-6 + 1e-5 * s.solid) {
-            const glm::dvec3 other = glm::abs(balance_sum(s, horizon < 0 ? 89 : 144, d, f, alpha, other_edge) - sum);
-            edge += std::max({other.r, other.g, other.b});
+        const bool horizon_close = std::abs(horizon) < 1e-6 + 1e-5 * s.solid, near_close = std::abs(near) < 1e-5 * 1.5;
+        for (const int other : {horizon_close ? count(-horizon, near) : 0, near_close ? count(horizon, -near) : 0}) {
+            if (other == 0 || other == count(horizon, near)) continue;
+            double other_edge = 0;
+            const glm::dvec3 change = glm::abs(balance_sum(s, other, d, f, alpha, other_edge) - sum);
+            edge += std::max({change.r, change.g, change.b});
         }
         *edge_slack = edge;
     }
     return sum;
 }
 
-glm::dvec3 area_light_brdf_integral(const ShadingInput& in, const brdf::Directions& d, const BrdfTowards& f) {
+double near_light_rounding(const ShadingInput& in) {
+    double nearest = glm::length(in.light - in.position) - std::max(in.light_radius, 0.0);
+    if (in.lamp.is_flat()) {
+        const glm::dvec3 from_centre = in.position - in.lamp.centre;
+        const glm::dvec2 below(glm::dot(from_centre, in.lamp.u), glm::dot(from_centre, in.lamp.v));
+        const double outside = in.lamp.shape == scene::LightShape::Disc ? std::max(glm::length(below) - in.lamp.radius, 0.0)
+                                                                          : glm::length(glm::max(glm::abs(below) - in.lamp.half_size, glm::dvec2(0.0)));
+        nearest = std::hypot(glm::dot(from_centre, in.lamp.normal), outside);
+    }
+    return 2.0 * 1.2e-7 / std::max(nearest, 1e-9);
+}
+
+glm::dvec3 area_light_brdf_integral(const ShadingInput& in, const brdf::Directions& d, const BrdfTowards& f, double alpha) {
     if (glm::dot(d.n, d.v) <= 0) return glm::dvec3(0.0);
     const Sampling s = sampling(in);
-    glm::dvec3 sum(0.0);
-    const auto add = [&](const glm::dvec3& dir, double solid_angle) {
-        const double nl = glm::dot(d.n, dir);
-        if (nl <= 0 || !(solid_angle > 0)) return;
-        const glm::dvec3 value = f(dir);
-        if (finite(value)) sum += value * (nl * s.radiance * solid_angle);
+    // Two midpoint grids combined by the balance heuristic: the light's own surface (or disc of
+    // directions) in elements of equal solid angle or equal area, and a cone about the mirror
+    // direction, half-angle 8 α (at least 0.02 rad, at most the hemisphere), in elements of equal
+    // solid angle: the light grid resolves the light, the cone grid a lobe sharper than its elements.
+    constexpr int kConeRings = 128, kConeAzimuths = 256;
+    const glm::dvec3 mirror = 2.0 * glm::dot(d.n, d.v) * d.n - d.v;
+    const double cone_angle = std::clamp(8.0 * alpha, 0.02, kPi / 2), cone_cos = std::cos(cone_angle), cone_versine = 1.0 - cone_cos;
+    const double cone_solid = 2 * kPi * cone_versine, cones = static_cast<double>(kConeRings) * kConeAzimuths;
+    const int light_cells = !s.lamp ? 160 * 320 : s.lamp->shape == scene::LightShape::Disc ? 128 * 256 : 200 * 200;
+    const auto light_density = [&](const glm::dvec3& dir) {  // per solid angle, the light grid's
+        if (!s.lamp) return glm::dot(dir, s.centre) >= s.cos_alpha ? 1.0 / s.solid : 0.0;
+        double margin = 0;
+        return light_pdf_along(s, dir, margin);  // uniform in area: r² / (A cos)
     };
-    // An element of a flat light at `point` of area `area`: its solid angle from the pixel.
-    const auto add_element = [&](const glm::dvec3& point, double area) {
+    const auto cone_density = [&](const glm::dvec3& dir) { return glm::dot(dir, mirror) >= cone_cos ? 1.0 / cone_solid : 0.0; };
+    glm::dvec3 sum(0.0);
+    const auto add = [&](const glm::dvec3& dir, double light_pdf, double cone_pdf) {
+        const double nl = glm::dot(d.n, dir), denominator = light_cells * light_pdf + cones * cone_pdf;
+        if (nl <= 0 || !(denominator > 0)) return;
+        const glm::dvec3 value = f(dir);
+        if (finite(value)) sum += value * (nl * s.radiance / denominator);
+    };
+    // The light grid.
+    const auto add_element = [&](const glm::dvec3& point) {
         const glm::dvec3 to = point - s.position;
         const double r2 = glm::dot(to, to);
         const glm::dvec3 dir = to / std::sqrt(r2);
-        add(dir, area * std::max(-glm::dot(dir, s.lamp->normal), 0.0) / r2);
+        const double emitted = -glm::dot(dir, s.lamp->normal);
+        if (emitted > 0) add(dir, r2 / (s.lamp->area() * emitted), cone_density(dir));
     };
     if (!s.lamp) {
         constexpr int kRings = 160, kAzimuths = 320;
@@ -203,17 +258,17 @@ glm::dvec3 area_light_brdf_integral(const ShadingInput& in, const brdf::Directio
             const double c = 1.0 - (k + 0.5) / kRings * s.versine, sine = std::sqrt(std::max(1.0 - c * c, 0.0));
             for (int m = 0; m < kAzimuths; ++m) {
                 const double phi = 2 * kPi * (m + 0.5) / kAzimuths;
-                add(c * l + sine * (std::cos(phi) * x + std::sin(phi) * y), s.solid / (kRings * kAzimuths));
+                const glm::dvec3 dir = c * l + sine * (std::cos(phi) * x + std::sin(phi) * y);
+                add(dir, 1.0 / s.solid, cone_density(dir));
             }
         }
     } else if (s.lamp->shape == scene::LightShape::Disc) {
-        constexpr int kRings = 128, kAzimuths = 256;
-        const double dr = s.lamp->radius / kRings;
+        constexpr int kRings = 128, kAzimuths = 256;  // rings of equal area
         for (int k = 0; k < kRings; ++k) {
-            const double r = (k + 0.5) * dr;
+            const double r = s.lamp->radius * std::sqrt((k + 0.5) / kRings);
             for (int m = 0; m < kAzimuths; ++m) {
                 const double phi = 2 * kPi * (m + 0.5) / kAzimuths;
-                add_element(s.lamp->centre + r * (std::cos(phi) * s.lamp->u + std::sin(phi) * s.lamp->v), r * dr * 2 * kPi / kAzimuths);
+                add_element(s.lamp->centre + r * (std::cos(phi) * s.lamp->u + std::sin(phi) * s.lamp->v));
             }
         }
     } else {
@@ -221,8 +276,19 @@ glm::dvec3 area_light_brdf_integral(const ShadingInput& in, const brdf::Directio
         for (int i = 0; i < kCells; ++i)
             for (int k = 0; k < kCells; ++k) {
                 const glm::dvec2 q = s.lamp->half_size * (2.0 * glm::dvec2((i + 0.5) / kCells, (k + 0.5) / kCells) - 1.0);
-                add_element(s.lamp->centre + q.x * s.lamp->u + q.y * s.lamp->v, s.lamp->area() / (kCells * kCells));
+                add_element(s.lamp->centre + q.x * s.lamp->u + q.y * s.lamp->v);
             }
+    }
+    // The cone grid: its directions that meet the light.
+    const glm::dvec3 cx = glm::normalize(glm::cross(std::abs(mirror.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0), mirror)), cy = glm::cross(mirror, cx);
+    for (int k = 0; k < kConeRings; ++k) {
+        const double c = 1.0 - (k + 0.5) / kConeRings * cone_versine, sine = std::sqrt(std::max(1.0 - c * c, 0.0));
+        for (int m = 0; m < kConeAzimuths; ++m) {
+            const double phi = 2 * kPi * (m + 0.5) / kConeAzimuths;
+            const glm::dvec3 dir = c * mirror + sine * (std::cos(phi) * cx + std::sin(phi) * cy);
+            const double light_pdf = light_density(dir);
+            if (light_pdf > 0) add(dir, light_pdf, 1.0 / cone_solid);
+        }
     }
     return sum;
 }

@@ -23,8 +23,16 @@ bool light_is_sized(const ShadingInput& in);
 // of the point count where the horizon test is that close.
 glm::dvec3 area_light_brdf(const ShadingInput& in, const brdf::Directions& d, const BrdfTowards& f, double alpha, double* edge_slack = nullptr);
 
-// The integral itself: a sphere's disc of directions in 160 rings of equal solid angle x 320
-// azimuths, a flat disc in 128 rings of equal width x 256 azimuths, a rectangle in 200 x 200 cells.
-glm::dvec3 area_light_brdf_integral(const ShadingInput& in, const brdf::Directions& d, const BrdfTowards& f);
+// What float may move the GPU's sum by, relative to its value, where the light comes close: each
+// term's 1 / r² moves by about 2 δ / r for the float rounding δ (~6e-8 of coordinates of order 1) of
+// the point's position, r its distance to the light's nearest point.
+double near_light_rounding(const ShadingInput& in);
+
+// The integral itself by two dense midpoint grids combined by the balance heuristic: the light (a
+// sphere's disc of directions in 160 rings of equal solid angle x 320 azimuths, a flat disc in 128
+// rings of equal area x 256 azimuths, a rectangle in 200 x 200 cells) and a cone of half-angle 8 α
+// about the mirror direction (128 x 256 elements of equal solid angle), so that lobes sharper than
+// the light's elements are resolved too.
+glm::dvec3 area_light_brdf_integral(const ShadingInput& in, const brdf::Directions& d, const BrdfTowards& f, double alpha);
 
 }  // namespace fxview::reference

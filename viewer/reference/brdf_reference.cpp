@@ -49,24 +49,24 @@ Reference make(ModelFromParameters model_from, std::function<double(const Refere
         const double irradiance = c.number("LightIrradiance");
         if (light_is_sized(in)) {
             // A sharp lobe amplifies float's rounding of each direction's cosines (~1e-7) by its exponent,
-            // about 2/α² for a GGX width α: that part of the value may move.
+            // about 2/α² for a GGX width α, and a light close by that of the position: that part may move.
             double edge = 0;
             const glm::dvec3 value = glm::abs(irradiance * area_light_brdf(in, d, towards(c, d), alpha_from(c), &edge));
             const double alpha = std::clamp(alpha_from(c), 0.001, 1.0), brightest = std::max({value.r, value.g, value.b});
-            return irradiance * edge + brightest * 1e-7 * 2.0 / (alpha * alpha) + tolerance * std::max(0.0, brightest - 1.0);
+            return irradiance * edge + brightest * (1e-7 * 2.0 / (alpha * alpha) + near_light_rounding(in)) + tolerance * std::max(0.0, brightest - 1.0);
         }
         const glm::dvec3 value = glm::abs(radiance(model, d, irradiance));
         const double brightest = std::max({value.r, value.g, value.b});
         return tilt_sensitivity(model, d, irradiance) + tolerance * std::max(0.0, brightest - 1.0);
     };
     // Under a sized light, `compare --ground-truth` measures the estimate against the integral over the light.
-    r.truth = [model_from, towards](const ShadingInput& in, const ReferenceContext& c, unsigned) {
+    r.truth = [model_from, alpha_from, towards](const ShadingInput& in, const ReferenceContext& c, unsigned) {
         const brdf::Directions d = directions(in);
-        const glm::dvec3 l = light_is_sized(in) ? c.number("LightIrradiance") * area_light_brdf_integral(in, d, towards(c, d))
+        const glm::dvec3 l = light_is_sized(in) ? c.number("LightIrradiance") * area_light_brdf_integral(in, d, towards(c, d), std::clamp(alpha_from(c), 0.001, 1.0))
                                                 : radiance(model_from(c), d, c.number("LightIrradiance"));
         return std::array<double, 4>{l.r, l.g, l.b, 1.0};
     };
-    r.truth_method = "the integral over the light (midpoint rule over its surface)";
+    r.truth_method = "the integral over the light (midpoint rules over its surface and about the mirror direction)";
     r.truth_with_sized_light = true;
     r.truth_deterministic_without_environment = true;
     r.tolerance = tolerance;

@@ -129,7 +129,8 @@ Reference make(Show show) {
             double edge = 0;
             area_light_brdf(in, g.d, towards(show, c, g.d), lobe_alpha(c), &edge);
             const glm::dvec3 spread = area_light_brdf(in, g.d, spread_towards(show, c, g.d), lobe_alpha(c));
-            return c.number("LightIrradiance") * (edge + spread.r);
+            const glm::dvec3 value = glm::abs(area_light_brdf(in, g.d, towards(show, c, g.d), lobe_alpha(c)));
+            return c.number("LightIrradiance") * (edge + spread.r + std::max({value.r, value.g, value.b}) * near_light_rounding(in));
         }
         const double irradiance = c.number("LightIrradiance") * std::max(g.nl, 0.0);
         const double slack = show == Show::Measured ? 0.0 : tilt_sensitivity(fit_model(c), g.d, c.number("LightIrradiance"));
@@ -138,11 +139,11 @@ Reference make(Show show) {
     };
     r.truth = [show](const ShadingInput& in, const ReferenceContext& c, unsigned) {
         const Geometry g = geometry(directions(in));
-        const glm::dvec3 l = light_is_sized(in) ? c.number("LightIrradiance") * area_light_brdf_integral(in, g.d, towards(show, c, g.d))
+        const glm::dvec3 l = light_is_sized(in) ? c.number("LightIrradiance") * area_light_brdf_integral(in, g.d, towards(show, c, g.d), lobe_alpha(c))
                                                 : brdf_value(show, c, g, g.angles) * c.number("LightIrradiance") * std::max(g.nl, 0.0);
         return std::array<double, 4>{l.r, l.g, l.b, 1.0};
     };
-    r.truth_method = "the integral over the light (midpoint rule over its surface)";
+    r.truth_method = "the integral over the light (midpoint rules over its surface and about the mirror direction)";
     r.truth_with_sized_light = true;
     r.truth_deterministic_without_environment = true;
     r.tolerance = 1e-4;
