@@ -180,7 +180,7 @@ std::string EffectSession::unused_light_radius_warning(const scene::Light& light
     if (!light.has_size()) return "";
     const TechniqueTraits& t = traits(technique_);
     const std::string shape = scene::light_shape_name(light.shape);
-    const std::string readers = " (cd.fx's Orders and wavelength.fx show a light's size and shape)";
+    const std::string readers = " (cd.fx's Orders, wavelength.fx, thinfilm.fx's films, analytic.fx, measured.fx and .brdf files' Lit show a light's size and shape)";
     if (light.shape == scene::LightShape::Sphere && !t.sized_light)
         return path_ + ": warning: technique '" + technique_ + "' treats the light as a point; its radius " + std::to_string(light.radius) +
                " changes nothing here" + readers;
