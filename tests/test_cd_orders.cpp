@@ -150,6 +150,21 @@ TEST_CASE("Orders under a large light follows its edge through bands: against ev
     }
 }
 
+TEST_CASE("Orders' bands: a band that ends on the last sample takes it once; a low light's orders near the horizon") {
+    // 500-520 nm in bands of 5: the last band ends on 520 nm (a first version added it twice).
+    app::RenderRequest narrow = disc_under_light(25, {"EnvironmentWeight=0", "Lower=500", "Upper=520", "LampBand=5"}, 64);
+    CHECK(app::compare_technique(narrow, "Orders", {}).pass);
+    // A light 15° across just above the disc's plane: its orders leave near the horizon, where their
+    // direction turns fast with λ (the bands' middle check). Ground truth: every order at every nm.
+    app::RenderRequest low = disc_under_light(15, {"EnvironmentWeight=0"}, 96);
+    low.scene.light.pose.position = glm::vec3(3.0f, 0.0f, 0.5f);
+    const app::CompareResult r = app::compare_technique(low, "Orders", {}, true);
+    CHECK(r.pass);
+    REQUIRE(r.ground_truth);
+    MESSAGE("a low light: bands against every nm CIEDE2000 mean ", r.ground_truth->mean_delta_e, " max ", r.ground_truth->max_delta_e);
+    CHECK(r.ground_truth->mean_delta_e < 0.3);  // measured 0.04 at 128x128 (max 3.9; before the middle check 0.1 and 12.4)
+}
+
 TEST_CASE("a sized light that a technique cannot use is said") {
     test::shared_context();
     scene::Scene scene;

@@ -238,18 +238,19 @@ float lamp_radiance(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, 
 
 // Order m at the wavelength of `ratio` = λ / d (`others`: the propagating orders' summed weights there)
 // as a band records it: x the ramp's value 0.5 + angle / width (the angle from the light's outline,
-// inside positive, -4 where the order misses), z its radiance inside (efficiency included), w 1 where
-// the order propagates.
+// inside positive, -4 where the order misses), y the height of its direction above the disc, z its
+// radiance inside (efficiency included), w 1 where the order propagates.
 vec4 lamp_order_record(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, vec3 view, float edge, float view_spread, float turn_spread,
                        int m, float ratio, float others) {
     float width = ratio / float(max(Tracks, 1)) + view_spread + float(abs(m)) * ratio * turn_spread;
     vec2 tangential = vec2(float(m) * ratio - view.x, -view.y);
     float z2 = 1.0 - dot(tangential, tangential);
     if (z2 <= 0.0) return vec4(0.5 - 4.0 / width, 0.0, 0.0, 0.0);
+    float rise = sqrt(z2);
     float efficiency = m == 0 ? (others > 0.0 ? ZeroOrder : 1.0) : (1.0 - ZeroOrder) * order_weight[abs(m)] / others;
-    vec3 incidence = tangential.x * d.across + tangential.y * d.along + sqrt(z2) * d.n;
-    if (flat_lamp) return vec4(0.5 + max(flat_light_angle(flat_view, incidence, disc), -4.0) / width, 0.0, efficiency * flat_light_ramp_scale(flat_view, width, disc), 1.0);
-    return vec4(0.5 + max(edge - length(incidence - d.l), -4.0) / width, 0.0, efficiency * sphere_light_ramp_scale(edge, width), 1.0);
+    vec3 incidence = tangential.x * d.across + tangential.y * d.along + rise * d.n;
+    if (flat_lamp) return vec4(0.5 + max(flat_light_angle(flat_view, incidence, disc), -4.0) / width, rise, efficiency * flat_light_ramp_scale(flat_view, width, disc), 1.0);
+    return vec4(0.5 + max(edge - length(incidence - d.l), -4.0) / width, rise, efficiency * sphere_light_ramp_scale(edge, width), 1.0);
 }
 
 // The propagating orders' summed weights at λ / d = ratio.
@@ -263,10 +264,15 @@ float order_shares(vec3 view, float ratio) {
 // Under a light much larger than the orders' blur and than a band's step, each order near the light
 // is recorded at both ends of a band of LampBand nm, and its ramp u (0.5 + angle / width, smooth in λ)
 // and its radiance inside s are followed linearly between: its radiance at the band's sample j is
-// (s_a + j ds) clamp(u_a + j du, 0, 1). Where the clamp does not act within the band (the order lies
-// inside, outside or on the ramp throughout) that sums against the band's moments Σ S x̄ j^n (n = 0,
-// 1, 2), gathered with the coating's samples; only where the order crosses the light's edge inside
-// the band is it summed sample by sample.
+// (s_a + j ds) clamp(u_a + j du, 0, 1). Near the horizon (its direction less than kLowOrder above the
+// disc, where it turns fast with λ, or where it starts or stops propagating) a record at the band's
+// middle checks that: where the ramp or the radiance there is off the line by more than 0.02, the
+// order is followed through both halves of the band, from its start to its middle and on to its end. Where the clamp does not act within the band (the order inside, outside or on
+// the ramp throughout) its sum is a combination of the band's moments Σ S x̄ j^n (n = 0, 1, 2); two
+// orders that cross the light's edge in the band are summed in the same pass over the samples, any
+// further one in a pass of its own.
+const float kLowOrder = 0.25;  // sin 14.5°
+
 void lamp_orders_banded(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, vec3 view, vec3 light, float edge, float view_spread, float turn_spread,
                         float diffuse, int most, inout vec3 xyz, inout float ybar_sum) {
     float tracks = float(max(Tracks, 1)), spacing = max(TrackSpacing, 1.0), centre = view.x + light.x, strength = Reflectance * Lamp;
@@ -274,7 +280,59 @@ void lamp_orders_banded(bool flat_lamp, bool disc, Disc d, FlatLightView flat_vi
     vec3 lamp = vec3(0.0);
     for (int k0 = 0; k0 <= last_sample; k0 += per_band) {
         int k1 = min(k0 + per_band, last_sample), end = k1 == last_sample ? k1 : k1 - 1;
-        // The coating, and the band's moments of the light spectrum times the CMFs.
+        float span = float(max(k1 - k0, 1));
+        float ra = float(Lower + k0 * step) / spacing, rb = float(Lower + k1 * step) / spacing, rm = 0.5 * (ra + rb);
+        float near = edge + 0.5 * (rb / tracks + view_spread + float(most) * rb * turn_spread);
+        float low = centre - near, high = centre + near;
+        int from = max(int(ceil(min(low / ra, low / rb))), -kMaxOrder), to = min(int(floor(max(high / ra, high / rb))), kMaxOrder);
+        float others_a = order_shares(view, ra), others_b = order_shares(view, rb), others_m = order_shares(view, rm);
+        vec3 along = vec3(0.0);                         // coefficients of the moments 0, 1, 2
+        vec4 crossing0 = vec4(0.0), crossing1 = vec4(0.0);  // u_a, du, s_a, ds of two orders crossing the edge
+        int crossings = 0;
+        for (int m = from; m <= to; ++m) {
+            vec4 a = lamp_order_record(flat_lamp, disc, d, flat_view, view, edge, view_spread, turn_spread, m, ra, others_a);
+            vec4 b = lamp_order_record(flat_lamp, disc, d, flat_view, view, edge, view_spread, turn_spread, m, rb, others_b);
+            if (a.w == 0.0 && b.w == 0.0) continue;  // evanescent at both ends
+            vec4 middle = vec4(0.0);
+            bool linear = true;
+            if (min(a.y, b.y) < kLowOrder) {  // near the horizon (or not propagating at an end): checked at the middle
+                middle = lamp_order_record(flat_lamp, disc, d, flat_view, view, edge, view_spread, turn_spread, m, rm, others_m);
+                linear = a.w == b.w && middle.w == a.w && abs(clamp(middle.x, 0.0, 1.0) - clamp(0.5 * (a.x + b.x), 0.0, 1.0)) <= 0.02 &&
+                         abs(middle.z - 0.5 * (a.z + b.z)) <= 0.02 * max(a.z, b.z);
+            }
+            if (a.w == 0.0) a.x = b.x;  // an order that stops propagating in the band fades out
+            if (b.w == 0.0) b.x = a.x;
+            if (!linear) {  // followed through both halves of the band
+                if (middle.w == 0.0) middle.x = 0.5 * (a.x + b.x);
+                for (int k = k0; k <= end; ++k) {
+                    int nm = Lower + k * step;
+                    float t = float(k - k0) / span;
+                    vec2 ramp_scale = t < 0.5 ? mix(a.xz, middle.xz, 2.0 * t) : mix(middle.xz, b.xz, 2.0 * t - 1.0);
+                    lamp += (ramp_scale.y * clamp(ramp_scale.x, 0.0, 1.0) * spectrum_at(LightSpectrum, nm)) * cmf_at(nm);
+                }
+                continue;
+            }
+            float du = (b.x - a.x) / span, ds = (b.z - a.z) / span, lowest = min(a.x, b.x), highest = max(a.x, b.x);
+            if (highest <= 0.0) continue;
+            if (lowest >= 1.0) {
+                along += vec3(a.z, ds, 0.0);
+            } else if (lowest >= 0.0 && highest <= 1.0) {
+                along += vec3(a.z * a.x, a.z * du + ds * a.x, ds * du);
+            } else if (crossings == 0) {
+                crossing0 = vec4(a.x, du, a.z, ds);
+                crossings = 1;
+            } else if (crossings == 1) {
+                crossing1 = vec4(a.x, du, a.z, ds);
+                crossings = 2;
+            } else {
+                for (int k = k0; k <= end; ++k) {
+                    int nm = Lower + k * step;
+                    float j = float(k - k0);
+                    lamp += ((a.z + j * ds) * clamp(a.x + j * du, 0.0, 1.0) * spectrum_at(LightSpectrum, nm)) * cmf_at(nm);
+                }
+            }
+        }
+        // The coating, the band's moments and the two crossing orders, in one pass over the samples.
         vec3 moment0 = vec3(0.0), moment1 = vec3(0.0), moment2 = vec3(0.0);
         for (int k = k0; k <= end; ++k) {
             int nm = Lower + k * step;
@@ -285,31 +343,11 @@ void lamp_orders_banded(bool flat_lamp, bool disc, Disc d, FlatLightView flat_vi
             moment0 += lit;
             moment1 += lit * j;
             moment2 += lit * (j * j);
+            lamp += lit * ((crossing0.z + j * crossing0.w) * clamp(crossing0.x + j * crossing0.y, 0.0, 1.0) +
+                           (crossing1.z + j * crossing1.w) * clamp(crossing1.x + j * crossing1.y, 0.0, 1.0));
         }
-        float ra = float(Lower + k0 * step) / spacing, rb = float(Lower + k1 * step) / spacing;
-        float near = edge + 0.5 * (rb / tracks + view_spread + float(most) * rb * turn_spread);
-        float low = centre - near, high = centre + near;
-        int from = max(int(ceil(min(low / ra, low / rb))), -kMaxOrder), to = min(int(floor(max(high / ra, high / rb))), kMaxOrder);
-        float others_a = order_shares(view, ra), others_b = order_shares(view, rb), span = float(max(k1 - k0, 1));
-        for (int m = from; m <= to; ++m) {
-            vec4 a = lamp_order_record(flat_lamp, disc, d, flat_view, view, edge, view_spread, turn_spread, m, ra, others_a);
-            vec4 b = lamp_order_record(flat_lamp, disc, d, flat_view, view, edge, view_spread, turn_spread, m, rb, others_b);
-            if (a.w == 0.0) a.x = b.x;  // an order that stops propagating in the band fades out
-            if (b.w == 0.0) b.x = a.x;
-            float du = (b.x - a.x) / span, ds = (b.z - a.z) / span, lowest = min(a.x, b.x), highest = max(a.x, b.x);
-            if (highest <= 0.0) continue;
-            if (lowest >= 1.0) {
-                lamp += a.z * moment0 + ds * moment1;
-            } else if (lowest >= 0.0 && highest <= 1.0) {
-                lamp += (a.z * a.x) * moment0 + (a.z * du + ds * a.x) * moment1 + (ds * du) * moment2;
-            } else {
-                for (int k = k0; k <= end; ++k) {
-                    int nm = Lower + k * step;
-                    float j = float(k - k0);
-                    lamp += ((a.z + j * ds) * clamp(a.x + j * du, 0.0, 1.0) * spectrum_at(LightSpectrum, nm)) * cmf_at(nm);
-                }
-            }
-        }
+        lamp += along.x * moment0 + along.y * moment1 + along.z * moment2;
+        if (end == last_sample) break;  // a last band that ends on the last sample has taken it
     }
     xyz += strength * lamp;
 }

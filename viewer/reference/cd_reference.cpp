@@ -161,9 +161,11 @@ std::pair<bool, double> lamp_banded(const LampView& w) {
 // from the light's outline, inside positive, −4 where the order misses), its radiance inside
 // (efficiency included); `valid` false where the order does not propagate.
 struct OrderRecord {
-    double ramp = 0, scale = 0;
+    double ramp = 0, rise = 0, scale = 0;  // rise: the height of the order's direction above the disc
     bool valid = false;
 };
+
+constexpr double kLowOrder = 0.25;  // cd.fx: below it an order's band is checked at its middle
 
 OrderRecord order_record(const Disc& d, const ShadingInput& in, const optics::GratingOrderModel& model, const LampView& w, int m, double nm, double offset) {
     OrderRecord r;
@@ -176,6 +178,7 @@ OrderRecord order_record(const Disc& d, const ShadingInput& in, const optics::Gr
     const double efficiency = efficiencies[static_cast<size_t>(m - range.first)];
     const glm::dvec3 incidence = l->x * d.across + l->y * d.along + l->z * d.n;
     r.valid = true;
+    r.rise = l->z;
     double angle = 0;
     if (in.lamp.is_flat()) {
         const auto hit = scene::flat_light_hit(in.lamp, in.position, glm::normalize(incidence));
@@ -209,10 +212,14 @@ double orders_radiance_exact(const Disc& d, const ShadingInput& in, const optics
 }
 
 // The band of samples that holds nm: each order near the light at its two ends (as the shader picks
-// them), its ramp and radiance inside interpolated linearly between the two records.
+// them), its ramp and radiance inside interpolated linearly between the two records; an order near the
+// horizon whose record at the band's middle is off that line by more than 0.02 (in the ramp, or
+// relative in the radiance inside) is followed through both halves of the band.
 double orders_radiance_banded(const Disc& d, const ShadingInput& in, const optics::GratingOrderModel& model, const LampView& w, int nm, double offset) {
     if (w.view.z <= 0) return 0.0;
-    const int k = (nm - w.lower) / w.step, k0 = k / w.per_band * w.per_band, k1 = std::min(k0 + w.per_band, w.last_sample);
+    const int k = (nm - w.lower) / w.step, last_band = w.last_sample % w.per_band == 0 ? w.last_sample - w.per_band : w.last_sample / w.per_band * w.per_band;
+    // The bands start at multiples of per_band; the last sample closes the band before it where it is one.
+    const int k0 = std::min(k / w.per_band * w.per_band, std::max(last_band, 0)), k1 = std::min(k0 + w.per_band, w.last_sample);
     const double na = w.lower + k0 * w.step, nb = w.lower + k1 * w.step, ra = na / model.spacing_nm, rb = nb / model.spacing_nm;
     const double near = w.edge + 0.5 * (rb / w.tracks + in.footprint.x + w.most * rb * in.footprint.y);
     const double low = w.centre - near, high = w.centre + near;
@@ -222,8 +229,26 @@ double orders_radiance_banded(const Disc& d, const ShadingInput& in, const optic
     double radiance = 0;
     for (int m = from; m <= to; ++m) {
         OrderRecord a = order_record(d, in, model, w, m, na, offset), b = order_record(d, in, model, w, m, nb, offset);
+        if (!a.valid && !b.valid) continue;  // evanescent at both ends
+        bool linear = true;
+        OrderRecord middle;
+        if (std::min(a.rise, b.rise) < kLowOrder) {
+            middle = order_record(d, in, model, w, m, 0.5 * (na + nb), offset);
+            linear = a.valid == b.valid && middle.valid == a.valid &&
+                     std::abs(std::clamp(middle.ramp, 0.0, 1.0) - std::clamp(0.5 * (a.ramp + b.ramp), 0.0, 1.0)) <= 0.02 &&
+                     std::abs(middle.scale - 0.5 * (a.scale + b.scale)) <= 0.02 * std::max(a.scale, b.scale);
+        }
         if (!a.valid) a.ramp = b.ramp;  // an order that stops propagating in the band fades out
         if (!b.valid) b.ramp = a.ramp;
+        if (!linear) {  // through both halves of the band
+            if (!middle.valid) middle.ramp = 0.5 * (a.ramp + b.ramp);
+            const OrderRecord& from_record = t < 0.5 ? a : middle;
+            const OrderRecord& to_record = t < 0.5 ? middle : b;
+            const double h = t < 0.5 ? 2 * t : 2 * t - 1;
+            radiance += (from_record.scale + h * (to_record.scale - from_record.scale)) *
+                        std::clamp(from_record.ramp + h * (to_record.ramp - from_record.ramp), 0.0, 1.0);
+            continue;
+        }
         radiance += (a.scale + t * (b.scale - a.scale)) * std::clamp(a.ramp + t * (b.ramp - a.ramp), 0.0, 1.0);
     }
     return radiance;
