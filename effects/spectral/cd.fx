@@ -209,15 +209,27 @@ float sinc_squared_weight(int m) {
     return m == 0 ? 1.0 : pow(sin(a) / a, 2.0);
 }
 
+// The propagating orders first..last for d / λ = orders_per_unit: |m λ/d - v_x|² + v_y² < 1.
+ivec2 propagating_orders(vec3 view, float orders_per_unit) {
+    float reach = sqrt(max(1.0 - view.y * view.y, 0.0));
+    return ivec2(clamp(int(floor((view.x - reach) * orders_per_unit)) + 1, -kMaxOrder, 0),
+                 clamp(int(ceil((view.x + reach) * orders_per_unit)) - 1, 0, kMaxOrder));
+}
+
+// Order m's efficiency: the mirror's share, or the rest in proportion to sinc²; `others` the
+// propagating orders' summed weights (0: the mirror alone takes everything).
+float order_efficiency(int m, float others) {
+    return m == 0 ? (others > 0.0 ? ZeroOrder : 1.0) : (1.0 - ZeroOrder) * order_weight[abs(m)] / others;
+}
+
 // The scene's lamp through the orders at wavelength nm: every order whose direction can fall on the
 // light (|l_x - c_x| <= |l - c|), looked up.
 float lamp_radiance(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, vec3 view, vec3 light, float edge, float view_spread, float turn_spread,
                     int nm) {
-    float tracks = float(max(Tracks, 1)), reach = sqrt(max(1.0 - view.y * view.y, 0.0)), spacing = max(TrackSpacing, 1.0);
+    float tracks = float(max(Tracks, 1)), spacing = max(TrackSpacing, 1.0);
     float ratio = float(nm) / spacing, orders_per_unit = spacing / float(nm);  // λ / d and d / λ
-    // The propagating orders: |m λ/d - v_x|² + v_y² < 1.
-    int first = clamp(int(floor((view.x - reach) * orders_per_unit)) + 1, -kMaxOrder, 0);
-    int last = clamp(int(ceil((view.x + reach) * orders_per_unit)) - 1, 0, kMaxOrder);
+    ivec2 orders = propagating_orders(view, orders_per_unit);
+    int first = orders.x, last = orders.y;
     float others = order_share[-first] + order_share[last];
     float widest = ratio / tracks + view_spread + float(max(-first, last)) * ratio * turn_spread;
     float near = edge + 0.5 * widest;
@@ -230,7 +242,7 @@ float lamp_radiance(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, 
         if (z2 <= 0.0) continue;
         vec3 incidence = tangential.x * d.across + tangential.y * d.along + sqrt(z2) * d.n;
         float width = ratio / tracks + view_spread + float(abs(m)) * ratio * turn_spread;
-        float efficiency = m == 0 ? (others > 0.0 ? ZeroOrder : 1.0) : (1.0 - ZeroOrder) * order_weight[abs(m)] / others;
+        float efficiency = order_efficiency(m, others);
         radiance += efficiency * (flat_lamp ? flat_light_radiance(flat_view, incidence, width, disc) : sphere_light_radiance(length(incidence - d.l), edge, width));
     }
     return radiance;
@@ -247,7 +259,7 @@ vec4 lamp_order_record(bool flat_lamp, bool disc, Disc d, FlatLightView flat_vie
     float z2 = 1.0 - dot(tangential, tangential);
     if (z2 <= 0.0) return vec4(0.5 - 4.0 / width, 0.0, 0.0, 0.0);
     float rise = sqrt(z2);
-    float efficiency = m == 0 ? (others > 0.0 ? ZeroOrder : 1.0) : (1.0 - ZeroOrder) * order_weight[abs(m)] / others;
+    float efficiency = order_efficiency(m, others);
     vec3 incidence = tangential.x * d.across + tangential.y * d.along + rise * d.n;
     if (flat_lamp) return vec4(0.5 + max(flat_light_angle(flat_view, incidence, disc), -4.0) / width, rise, efficiency * flat_light_ramp_scale(flat_view, width, disc), 1.0);
     return vec4(0.5 + max(edge - length(incidence - d.l), -4.0) / width, rise, efficiency * sphere_light_ramp_scale(edge, width), 1.0);
@@ -255,10 +267,8 @@ vec4 lamp_order_record(bool flat_lamp, bool disc, Disc d, FlatLightView flat_vie
 
 // The propagating orders' summed weights at λ / d = ratio.
 float order_shares(vec3 view, float ratio) {
-    float reach = sqrt(max(1.0 - view.y * view.y, 0.0));
-    int first = clamp(int(floor((view.x - reach) / ratio)) + 1, -kMaxOrder, 0);
-    int last = clamp(int(ceil((view.x + reach) / ratio)) - 1, 0, kMaxOrder);
-    return order_share[-first] + order_share[last];
+    ivec2 orders = propagating_orders(view, 1.0 / ratio);
+    return order_share[-orders.x] + order_share[orders.y];
 }
 
 // Under a light much larger than the orders' blur and than a band's step, each order near the light
@@ -413,7 +423,7 @@ GLSLShader OrdersFS {
         if (flat_lamp && flat_light_is_disc()) lamp_orders(true, true, d, flat_view, view, light, edge, view_spread, turn_spread, diffuse, xyz, ybar_sum);
         else if (flat_lamp) lamp_orders(true, false, d, flat_view, view, light, edge, view_spread, turn_spread, diffuse, xyz, ybar_sum);
         else lamp_orders(false, false, d, flat_view, view, light, edge, view_spread, turn_spread, diffuse, xyz, ybar_sum);
-        float reach = sqrt(max(1.0 - view.y * view.y, 0.0)), spacing = max(TrackSpacing, 1.0);
+        float spacing = max(TrackSpacing, 1.0);
         // The surroundings: every propagating order mirrors the environment's spectral radiance
         // L = Σ_k w_k S_k from the direction the grating equation picks for it. The direction moves
         // slowly with λ, so it is found once per band of EnvironmentBand nm, at the band's mean
@@ -433,16 +443,16 @@ GLSLShader OrdersFS {
                 nm_sum += float(nm);
                 count += 1.0;
             }
-            float ratio = nm_sum / count / spacing, orders_per_unit = 1.0 / ratio;
-            int first = clamp(int(floor((view.x - reach) * orders_per_unit)) + 1, -kMaxOrder, 0);
-            int last = clamp(int(ceil((view.x + reach) * orders_per_unit)) - 1, 0, kMaxOrder);
+            float ratio = nm_sum / count / spacing;
+            ivec2 orders = propagating_orders(view, 1.0 / ratio);
+            int first = orders.x, last = orders.y;
             float others = order_share[-first] + order_share[last];
             for (int m = first; m <= last; ++m) {
                 vec2 tangential = vec2(float(m) * ratio - view.x, -view.y);
                 float z2 = 1.0 - dot(tangential, tangential);
                 if (z2 <= 0.0) continue;
                 vec3 incidence = tangential.x * d.across + tangential.y * d.along + sqrt(z2) * d.n;
-                float efficiency = m == 0 ? (others > 0.0 ? ZeroOrder : 1.0) : (1.0 - ZeroOrder) * order_weight[abs(m)] / others;
+                float efficiency = order_efficiency(m, others);
                 vec3 w = spectral_environment_weights(incidence);
                 xyz += Reflectance * efficiency * vec3(dot(w, band_x), dot(w, band_y), dot(w, band_z));
             }

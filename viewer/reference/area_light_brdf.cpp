@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <numbers>
 
+#include "brdf/microfacet.hpp"
 #include "scene/light_geometry.hpp"
 
 namespace fxview::reference {
@@ -32,8 +33,7 @@ double lobe_pdf(const brdf::Directions& d, const glm::dvec3& l, double alpha) {
     const glm::dvec3 h = glm::normalize(l + d.v);
     const double nh = glm::dot(d.n, h), vh = glm::dot(d.v, h);
     if (nh <= 0 || vh <= 0) return 0.0;
-    const double a2 = alpha * alpha, q = nh * nh * (a2 - 1.0) + 1.0;
-    return a2 / (kPi * q * q) * nh / (4.0 * vh);
+    return brdf::ggx_distribution(nh, alpha) * nh / (4.0 * vh);
 }
 
 // Direction i of the lobe's set: about the GGX normal at the Hammersley point of i.
