@@ -18,6 +18,7 @@
 #include "spectral.glsl"
 #include "environment_spectral.glsl"
 #include "area_light.glsl"
+#include "fullscreen.glsl"
 
 uniform int LightSpectrum < string UIName = "Light spectrum"; string UIWidget = "combo"; string UIItems = "spectral:library"; string UIGroup = "Spectra";
                             string UIHelp = "The light's spectrum (spectra/library.txt; 5 = D65); a scene light spectrum (--light-spectrum, Scene tab) overrides it";
@@ -197,198 +198,7 @@ GLSLShader GratingFS {
     }
 }
 
-// Orders past 32 are not drawn: with d up to 5000 nm, light of 360 nm has no more than 28.
-const int kMaxOrder = 32;
-
-// sinc²(m a) and its sums over m = 1..k: the weights and shares of the orders m != 0 (symmetric in m),
-// filled once per fragment (globals: an array passed to a function is copied at every call).
-float order_weight[kMaxOrder + 1], order_share[kMaxOrder + 1];
-
-float sinc_squared_weight(int m) {
-    float a = PI * float(m) * PitFraction;
-    return m == 0 ? 1.0 : pow(sin(a) / a, 2.0);
-}
-
-// The propagating orders first..last for d / λ = orders_per_unit: |m λ/d - v_x|² + v_y² < 1.
-ivec2 propagating_orders(vec3 view, float orders_per_unit) {
-    float reach = sqrt(max(1.0 - view.y * view.y, 0.0));
-    return ivec2(clamp(int(floor((view.x - reach) * orders_per_unit)) + 1, -kMaxOrder, 0),
-                 clamp(int(ceil((view.x + reach) * orders_per_unit)) - 1, 0, kMaxOrder));
-}
-
-// Order m's efficiency: the mirror's share, or the rest in proportion to sinc²; `others` the
-// propagating orders' summed weights (0: the mirror alone takes everything).
-float order_efficiency(int m, float others) {
-    return m == 0 ? (others > 0.0 ? ZeroOrder : 1.0) : (1.0 - ZeroOrder) * order_weight[abs(m)] / others;
-}
-
-// The scene's lamp through the orders at wavelength nm: every order whose direction can fall on the
-// light (|l_x - c_x| <= |l - c|), looked up.
-float lamp_radiance(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, vec3 view, vec3 light, float edge, float view_spread, float turn_spread,
-                    int nm) {
-    float tracks = float(max(Tracks, 1)), spacing = max(TrackSpacing, 1.0);
-    float ratio = float(nm) / spacing, orders_per_unit = spacing / float(nm);  // λ / d and d / λ
-    ivec2 orders = propagating_orders(view, orders_per_unit);
-    int first = orders.x, last = orders.y;
-    float others = order_share[-first] + order_share[last];
-    float widest = ratio / tracks + view_spread + float(max(-first, last)) * ratio * turn_spread;
-    float near = edge + 0.5 * widest;
-    int from = max(first, int(ceil((view.x + light.x - near) * orders_per_unit)));
-    int to = min(last, int(floor((view.x + light.x + near) * orders_per_unit)));
-    float radiance = 0.0;
-    for (int m = from; m <= to; ++m) {
-        vec2 tangential = vec2(float(m) * ratio - view.x, -view.y);
-        float z2 = 1.0 - dot(tangential, tangential);
-        if (z2 <= 0.0) continue;
-        vec3 incidence = tangential.x * d.across + tangential.y * d.along + sqrt(z2) * d.n;
-        float width = ratio / tracks + view_spread + float(abs(m)) * ratio * turn_spread;
-        float efficiency = order_efficiency(m, others);
-        radiance += efficiency * (flat_lamp ? flat_light_radiance(flat_view, incidence, width, disc) : sphere_light_radiance(length(incidence - d.l), edge, width));
-    }
-    return radiance;
-}
-
-// Order m at the wavelength of `ratio` = λ / d (`others`: the propagating orders' summed weights there)
-// as a band records it: x the ramp's value 0.5 + angle / width (the angle from the light's outline,
-// inside positive, -4 where the order misses), y the height of its direction above the disc, z its
-// radiance inside (efficiency included), w 1 where the order propagates.
-vec4 lamp_order_record(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, vec3 view, float edge, float view_spread, float turn_spread,
-                       int m, float ratio, float others) {
-    float width = ratio / float(max(Tracks, 1)) + view_spread + float(abs(m)) * ratio * turn_spread;
-    vec2 tangential = vec2(float(m) * ratio - view.x, -view.y);
-    float z2 = 1.0 - dot(tangential, tangential);
-    if (z2 <= 0.0) return vec4(0.5 - 4.0 / width, 0.0, 0.0, 0.0);
-    float rise = sqrt(z2);
-    float efficiency = order_efficiency(m, others);
-    vec3 incidence = tangential.x * d.across + tangential.y * d.along + rise * d.n;
-    if (flat_lamp) return vec4(0.5 + max(flat_light_angle(flat_view, incidence, disc), -4.0) / width, rise, efficiency * flat_light_ramp_scale(flat_view, width, disc), 1.0);
-    return vec4(0.5 + max(edge - length(incidence - d.l), -4.0) / width, rise, efficiency * sphere_light_ramp_scale(edge, width), 1.0);
-}
-
-// The propagating orders' summed weights at λ / d = ratio.
-float order_shares(vec3 view, float ratio) {
-    ivec2 orders = propagating_orders(view, 1.0 / ratio);
-    return order_share[-orders.x] + order_share[orders.y];
-}
-
-// Under a light much larger than the orders' blur and than a band's step, each order near the light
-// is recorded at both ends of a band of LampBand nm, and its ramp u (0.5 + angle / width, smooth in λ)
-// and its radiance inside s are followed linearly between: its radiance at the band's sample j is
-// (s_a + j ds) clamp(u_a + j du, 0, 1). Near the horizon (its direction less than kLowOrder above the
-// disc, where it turns fast with λ, or where it starts or stops propagating) a record at the band's
-// middle checks that: where the ramp or the radiance there is off the line by more than 0.02, the
-// order is followed through both halves of the band, from its start to its middle and on to its end. Where the clamp does not act within the band (the order inside, outside or on
-// the ramp throughout) its sum is a combination of the band's moments Σ S x̄ j^n (n = 0, 1, 2); two
-// orders that cross the light's edge in the band are summed in the same pass over the samples, any
-// further one in a pass of its own.
-const float kLowOrder = 0.25;  // sin 14.5°
-
-void lamp_orders_banded(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, vec3 view, vec3 light, float edge, float view_spread, float turn_spread,
-                        float diffuse, int most, inout vec3 xyz, inout float ybar_sum) {
-    float tracks = float(max(Tracks, 1)), spacing = max(TrackSpacing, 1.0), centre = view.x + light.x, strength = Reflectance * Lamp;
-    int step = max(Steps, 1), last_sample = max(Upper - Lower, 0) / step, per_band = max(LampBand / step, 1);
-    vec3 lamp = vec3(0.0);
-    for (int k0 = 0; k0 <= last_sample; k0 += per_band) {
-        int k1 = min(k0 + per_band, last_sample), end = k1 == last_sample ? k1 : k1 - 1;
-        float span = float(max(k1 - k0, 1));
-        float ra = float(Lower + k0 * step) / spacing, rb = float(Lower + k1 * step) / spacing, rm = 0.5 * (ra + rb);
-        float near = edge + 0.5 * (rb / tracks + view_spread + float(most) * rb * turn_spread);
-        float low = centre - near, high = centre + near;
-        int from = max(int(ceil(min(low / ra, low / rb))), -kMaxOrder), to = min(int(floor(max(high / ra, high / rb))), kMaxOrder);
-        float others_a = order_shares(view, ra), others_b = order_shares(view, rb), others_m = order_shares(view, rm);
-        vec3 along = vec3(0.0);                         // coefficients of the moments 0, 1, 2
-        vec4 crossing0 = vec4(0.0), crossing1 = vec4(0.0);  // u_a, du, s_a, ds of two orders crossing the edge
-        int crossings = 0;
-        for (int m = from; m <= to; ++m) {
-            vec4 a = lamp_order_record(flat_lamp, disc, d, flat_view, view, edge, view_spread, turn_spread, m, ra, others_a);
-            vec4 b = lamp_order_record(flat_lamp, disc, d, flat_view, view, edge, view_spread, turn_spread, m, rb, others_b);
-            if (a.w == 0.0 && b.w == 0.0) continue;  // evanescent at both ends
-            vec4 middle = vec4(0.0);
-            bool linear = true;
-            if (min(a.y, b.y) < kLowOrder) {  // near the horizon (or not propagating at an end): checked at the middle
-                middle = lamp_order_record(flat_lamp, disc, d, flat_view, view, edge, view_spread, turn_spread, m, rm, others_m);
-                linear = a.w == b.w && middle.w == a.w && abs(clamp(middle.x, 0.0, 1.0) - clamp(0.5 * (a.x + b.x), 0.0, 1.0)) <= 0.02 &&
-                         abs(middle.z - 0.5 * (a.z + b.z)) <= 0.02 * max(a.z, b.z);
-            }
-            if (a.w == 0.0) a.x = b.x;  // an order that stops propagating in the band fades out
-            if (b.w == 0.0) b.x = a.x;
-            if (!linear) {  // followed through both halves of the band
-                if (middle.w == 0.0) middle.x = 0.5 * (a.x + b.x);
-                for (int k = k0; k <= end; ++k) {
-                    int nm = Lower + k * step;
-                    float t = float(k - k0) / span;
-                    vec2 ramp_scale = t < 0.5 ? mix(a.xz, middle.xz, 2.0 * t) : mix(middle.xz, b.xz, 2.0 * t - 1.0);
-                    lamp += (ramp_scale.y * clamp(ramp_scale.x, 0.0, 1.0) * spectrum_at(LightSpectrum, nm)) * cmf_at(nm);
-                }
-                continue;
-            }
-            float du = (b.x - a.x) / span, ds = (b.z - a.z) / span, lowest = min(a.x, b.x), highest = max(a.x, b.x);
-            if (highest <= 0.0) continue;
-            if (lowest >= 1.0) {
-                along += vec3(a.z, ds, 0.0);
-            } else if (lowest >= 0.0 && highest <= 1.0) {
-                along += vec3(a.z * a.x, a.z * du + ds * a.x, ds * du);
-            } else if (crossings == 0) {
-                crossing0 = vec4(a.x, du, a.z, ds);
-                crossings = 1;
-            } else if (crossings == 1) {
-                crossing1 = vec4(a.x, du, a.z, ds);
-                crossings = 2;
-            } else {
-                for (int k = k0; k <= end; ++k) {
-                    int nm = Lower + k * step;
-                    float j = float(k - k0);
-                    lamp += ((a.z + j * ds) * clamp(a.x + j * du, 0.0, 1.0) * spectrum_at(LightSpectrum, nm)) * cmf_at(nm);
-                }
-            }
-        }
-        // The coating, the band's moments and the two crossing orders, in one pass over the samples.
-        vec3 moment0 = vec3(0.0), moment1 = vec3(0.0), moment2 = vec3(0.0);
-        for (int k = k0; k <= end; ++k) {
-            int nm = Lower + k * step;
-            vec3 cmf = cmf_at(nm), lit = spectrum_at(LightSpectrum, nm) * cmf;
-            float j = float(k - k0);
-            xyz += lit * SubstrateWeight * spectrum_at(SubstrateSpectrum, nm) * diffuse;
-            ybar_sum += cmf.y;
-            moment0 += lit;
-            moment1 += lit * j;
-            moment2 += lit * (j * j);
-            lamp += lit * ((crossing0.z + j * crossing0.w) * clamp(crossing0.x + j * crossing0.y, 0.0, 1.0) +
-                           (crossing1.z + j * crossing1.w) * clamp(crossing1.x + j * crossing1.y, 0.0, 1.0));
-        }
-        lamp += along.x * moment0 + along.y * moment1 + along.z * moment2;
-        if (end == last_sample) break;  // a last band that ends on the last sample has taken it
-    }
-    xyz += strength * lamp;
-}
-
-// The scene's lamp through the orders at every sampled nm (into xyz and ybar_sum). `flat_lamp` and
-// `disc` are constants at each call, so that each call compiles to its own light's code: llvmpipe
-// runs both sides of a branch inside a loop.
-void lamp_orders(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, vec3 view, vec3 light, float edge, float view_spread, float turn_spread,
-                 float diffuse, inout vec3 xyz, inout float ybar_sum) {
-    float tracks = float(max(Tracks, 1)), reach = sqrt(max(1.0 - view.y * view.y, 0.0)), spacing = max(TrackSpacing, 1.0);
-    // Every order leaves with the along-track component -v_y: none meets the light unless that lies
-    // within `near` of the light's l_y (|l_y - c_y| <= |l - c|) for the widest order at the longest
-    // wavelength. Most pixels lie outside that sector and skip the orders.
-    float longest = float(Upper) / spacing;
-    int most = min(int(ceil((abs(view.x) + reach) * spacing / float(max(Lower, 1)))), kMaxOrder);
-    float widest = longest / tracks + view_spread + float(most) * longest * turn_spread;
-    bool lit = view.z > 0.0 && abs(view.y + light.y) <= edge + 0.5 * widest;
-    if (!lit) {
-        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) add_sample(xyz, ybar_sum, nm, 0.0, diffuse);
-        return;
-    }
-    // A light twice the orders' blur and a band's step: its edge followed through bands.
-    float size = flat_lamp ? min(flat_view.half_angles.x, flat_view.half_angles.y) : edge;
-    int per_band = max(LampBand / max(Steps, 1), 1);
-    if (per_band > 1 && size > 2.0 * max(widest, float(most * per_band * max(Steps, 1)) / spacing)) {
-        lamp_orders_banded(flat_lamp, disc, d, flat_view, view, light, edge, view_spread, turn_spread, diffuse, most, xyz, ybar_sum);
-        return;
-    }
-    for (int nm = Lower; nm <= Upper; nm += max(Steps, 1))
-        add_sample(xyz, ybar_sum, nm, Reflectance * lamp_radiance(flat_lamp, disc, d, flat_view, view, light, edge, view_spread, turn_spread, nm) * Lamp, diffuse);
-}
+#include "cd_orders.glsl"  // the orders under the scene's light, and the table they read
 
 GLSLShader OrdersFS {
     #include "fragment_inputs.glsl"
@@ -409,60 +219,27 @@ GLSLShader OrdersFS {
         // spread over that besides its coherence width.
         float view_spread = length(dFdxFine(d.v)) + length(dFdyFine(d.v));
         float turn_spread = length(dFdxFine(d.across)) + length(dFdyFine(d.across));
-        order_weight[0] = order_share[0] = 0.0;
-        for (int m = 1; m <= kMaxOrder; ++m) {
-            order_weight[m] = sinc_squared_weight(m);
-            order_share[m] = order_share[m - 1] + order_weight[m];
-        }
         float diffuse = max(dot(d.n, d.l), 0.0) * Lamp;
         if (flat_lamp) diffuse = flat_light_factors(fs_in.world_position, d.n, d.v, 1.0, false).x * Lamp;
         bool surroundings = orders_see_environment();
-        vec3 xyz = vec3(0.0);
-        float ybar_sum = 0.0;
+        vec3 lamp = vec3(0.0);
         FlatLightView flat_view = flat_light_view(fs_in.world_position);
-        if (flat_lamp && flat_light_is_disc()) lamp_orders(true, true, d, flat_view, view, light, edge, view_spread, turn_spread, diffuse, xyz, ybar_sum);
-        else if (flat_lamp) lamp_orders(true, false, d, flat_view, view, light, edge, view_spread, turn_spread, diffuse, xyz, ybar_sum);
-        else lamp_orders(false, false, d, flat_view, view, light, edge, view_spread, turn_spread, diffuse, xyz, ybar_sum);
-        float spacing = max(TrackSpacing, 1.0);
-        // The surroundings: every propagating order mirrors the environment's spectral radiance
-        // L = Σ_k w_k S_k from the direction the grating equation picks for it. The direction moves
-        // slowly with λ, so it is found once per band of EnvironmentBand nm, at the band's mean
-        // wavelength, and the band's samples of S_k × CMF are summed first. The orders' widths are
-        // not applied: the sky and the studio are smooth at their scale.
-        int step = max(Steps, 1), per_band = max(EnvironmentBand / step, 1);
-        for (int start = Lower; surroundings && view.z > 0.0 && start <= Upper; start += per_band * step) {
-            vec3 band_x = vec3(0.0), band_y = vec3(0.0), band_z = vec3(0.0);  // Σ S_k cmf_c per k
-            float nm_sum = 0.0, count = 0.0;
-            for (int i = 0; i < per_band; ++i) {
-                int nm = start + i * step;
-                if (nm > Upper) break;
-                vec3 spectra = spectral_environment_spectra(nm), cmf = cmf_at(nm);
-                band_x += spectra * cmf.x;
-                band_y += spectra * cmf.y;
-                band_z += spectra * cmf.z;
-                nm_sum += float(nm);
-                count += 1.0;
-            }
-            float ratio = nm_sum / count / spacing;
-            ivec2 orders = propagating_orders(view, 1.0 / ratio);
-            int first = orders.x, last = orders.y;
-            float others = order_share[-first] + order_share[last];
-            for (int m = first; m <= last; ++m) {
-                vec2 tangential = vec2(float(m) * ratio - view.x, -view.y);
-                float z2 = 1.0 - dot(tangential, tangential);
-                if (z2 <= 0.0) continue;
-                vec3 incidence = tangential.x * d.across + tangential.y * d.along + sqrt(z2) * d.n;
-                float efficiency = order_efficiency(m, others);
-                vec3 w = spectral_environment_weights(incidence);
-                xyz += Reflectance * efficiency * vec3(dot(w, band_x), dot(w, band_y), dot(w, band_z));
-            }
-        }
+        if (flat_lamp && flat_light_is_disc()) lamp_orders(true, true, d, flat_view, view, light, edge, view_spread, turn_spread, lamp);
+        else if (flat_lamp) lamp_orders(true, false, d, flat_view, view, light, edge, view_spread, turn_spread, lamp);
+        else lamp_orders(false, false, d, flat_view, view, light, edge, view_spread, turn_spread, lamp);
+        vec4 coating = coating_sums();  // Σ S R x̄ȳz̄, Σ ȳ
+        vec3 xyz = SubstrateWeight * diffuse * coating.xyz + Reflectance * Lamp * lamp;
+        if (surroundings && view.z > 0.0) xyz += Reflectance * environment_orders(d, view);
+        float ybar_sum = coating.w;
         color = vec4(xyz_to_srgb(xyz * normalisation(ybar_sum) * Brightness) + (surroundings ? vec3(0.0) : environment(d)), 1.0);
         fx_capture();
         fx_capture_footprint = vec4(view_spread, turn_spread, 0.0, 0.0);
     }
 }
 
-technique Orders < bool Default = true; string UIName = "Diffraction orders (lamps, energy-true)"; > { pass p0 { VertexShader = StandardVS; FragmentShader = OrdersFS; } }
+technique Orders < bool Default = true; string UIName = "Diffraction orders (lamps, energy-true)"; > {
+    pass table { VertexShader = FullscreenVS; FragmentShader = OrdersTableFS; Draw = Buffer; DepthTestEnable = false; RenderColorTarget0 = OrdersTableTarget; }
+    pass p0 { VertexShader = StandardVS; FragmentShader = OrdersFS; }
+}
 technique Thesis < string UIName = "Simple model (hard cut)"; > { pass p0 { VertexShader = StandardVS; FragmentShader = ThesisFS; } }
 technique Grating < string UIName = "Grating (point light, peak 1)"; > { pass p0 { VertexShader = StandardVS; FragmentShader = GratingFS; } }
