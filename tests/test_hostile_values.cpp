@@ -248,3 +248,21 @@ TEST_CASE("a copy of a shipped effect with wider ranges gets no endless CPU refe
     CHECK(r.exit_code == 1);
     CHECK(has(r.err, "Tracks = 100000 lies outside what the CPU reference computes (1..200)"));
 }
+
+TEST_CASE("a copy of any shipped effect in another folder still opens: its headers live in effects/lib") {
+    // Users copy a shipped effect to tweak it; an include kept next to the original would break
+    // the copy (it did once for cd.fx's orders). Every .fx and .cgfx is copied alone and checked.
+    const std::string dir = folder("lone-copies");
+    int copies = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(kEffects)) {
+        const std::string ext = entry.path().extension().string();
+        if (ext != ".fx" && ext != ".cgfx") continue;
+        const std::string copy = dir + "/" + entry.path().filename().string();
+        fs::copy_file(entry.path(), copy, fs::copy_options::overwrite_existing);
+        const Result r = run("check " + copy);
+        INFO(copy, "\n", r.out, r.err);
+        CHECK(r.exit_code == 0);
+        ++copies;
+    }
+    CHECK(copies >= 9);  // the nine shipped effects (a rename that hid them all would pass vacuously)
+}
