@@ -92,8 +92,12 @@ done
 "$fxview" pick effects/spectral/wavelength.fx -t Lambert --set Kd=1 --set ObjectSpectrum=E --light-position 0,0,3 --light-intensity 120lx --size 33x33 --at 16,16 | tee "$out/pick-photometric.txt" || true
 # Films mirroring a sized light, and rough films through their lobe (the filtered gather on the driver).
 "$fxview" compare effects/spectral/thinfilm.fx -t BubbleFourier --light-shape rectangle --light-size 2,1 --light-position 0,1,4 --size 64x64 --json | tee "$out/compare-film-lamp.jsonl" || true
-for r in 0.2 0.4; do
-  "$fxview" compare effects/spectral/thinfilm.fx -t BubbleFourier --set Roughness=$r --environment sky:35 --ground-truth --size 48x48 --json | tee -a "$out/compare-rough-film.jsonl" || true
+# Rough films in four strata of viewing angle: GPU = CPU, the ground truth, and their cost against smooth.
+for r in 0.2 0.4 0.7; do for t in BubbleFourier FresnelFourier FresnelExact; do
+  "$fxview" compare effects/spectral/thinfilm.fx -t $t --set Roughness=$r --environment sky:35 --ground-truth --size 48x48 --json | tee -a "$out/compare-rough-film.jsonl" || true
+done; done
+for r in 0 0.4; do
+  "$fxview" bench effects/spectral/thinfilm.fx --techniques FresnelFourier,BubbleFourier,FresnelExact --environment sky:35 --set Roughness=$r --frames 5 | tee -a "$out/bench-rough-film.md" || true
 done
 # Issue #28: a .brdf's own importance sampling (isFunc) through the NVIDIA driver, and PBR's sampled
 # specular lobe against the CPU split sum and the ground truth.
@@ -107,7 +111,7 @@ for shape in "--light-angle 15" "--light-shape disc --light-angle 15" "--light-s
   "$fxview" bench effects/brdf/analytic.fx --techniques Lambert,PBR,CookTorranceGGX $shape --frames 5 | tee -a "$out/bench-brdf-area.md" || true
 done
 # The CD's orders under large lights through bands (LampBand) against every order at every nm, and their cost head-on.
-for shape in "--light-angle 25" "--light-shape disc --light-angle 25" "--light-shape rectangle --light-size 3,1"; do
+for shape in "--light-angle 25" "--light-shape disc --light-angle 25" "--light-shape rectangle --light-size 3,1" "--light-shape rectangle --light-angle 40" "--light-shape disc --light-angle 60"; do
   "$fxview" compare effects/spectral/cd.fx -t Orders --mesh disc --light-position 0,1.5,3 --set EnvironmentWeight=0 $shape --ground-truth --size 96x96 --json | tee -a "$out/compare-cd-bands.jsonl" || true
   "$fxview" bench effects/spectral/cd.fx --techniques Thesis,Orders --mesh disc --light-position 0,1.5,3 $shape --frames 5 | tee -a "$out/bench-cd-bands.md" || true
 done

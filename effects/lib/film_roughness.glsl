@@ -1,8 +1,11 @@
-// A rough film (thinfilm.fx's Roughness): the environment it mirrors seen through a glossy lobe, in
-// a split form (as real-time renderers treat Fresnel under prefiltered environments): the film's
-// reflectance at the lobe's mean half-vector angle times the radiance averaged under the lobe. `compare
-// --ground-truth` measures it against the lobe's integral with the film at each direction's half
-// vector (docs/thin-films.md). CPU twin: EnvironmentLookup::spectral_lobe_mean.
+// A rough film (thinfilm.fx's Roughness): the environment it mirrors seen through a glossy lobe. The
+// lobe's directions are split into four strata by the angle the film is seen at (v·h, h the half
+// vector of the eye and the direction): each stratum brings its own light (the environment's weights
+// summed over its directions, the sun's points among them) and takes the film's reflectance at its
+// own mean angle (weighted by that light), so that a broad lobe averages the film over four angles and
+// the sun in the lobe takes the film's colour near its own half vector. `compare --ground-truth`
+// measures it against the lobe's integral with the film at each direction's half vector
+// (docs/thin-films.md). CPU twin: viewer/reference/film_strata.cpp.
 #pragma once
 #include "environment_spectral_lobes.glsl"
 
@@ -13,18 +16,9 @@ float film_lobe_power() {
     return clamp((1.0 / (alpha * alpha) - 1.0) / 2.0, 1.0, 1e5);
 }
 
-// The environment's weights averaged under that lobe (environment_spectral_lobes.glsl's gather over
-// the lobe's mass above the surface): what a rough mirror sees.
-vec3 film_rough_weights(vec3 n, vec3 v, float power) {
-    float mass = spectral_lobe_mass(dot(n, v), power).x;
-    return mass > 0.0 ? spectral_environment_highlight(n, v, false, power) / mass : vec3(0.0);
-}
-
-
 // The angles the film is seen at through the lobe: the mean (x) and standard deviation (y) of v·h (h
 // the half vector of v and l) over 32 of the lobe's directions above the surface. At grazing views the
-// lobe's half vectors lie nearer the normal than the eye, and a broad lobe's film colour follows them;
-// the Fourier films turn the spread into a spread of path differences (thin_film_fourier.glsl).
+// lobe's half vectors lie nearer the normal than the eye. They place the strata's edges.
 vec2 film_rough_cosine(vec3 n, vec3 v, float power) {
     vec3 r = reflect(-v, n), x, y;
     spectral_frame(r, x, y);
@@ -42,4 +36,102 @@ vec2 film_rough_cosine(vec3 n, vec3 v, float power) {
     if (!(count > 0.0)) return vec2(clamp(dot(n, v), 0.0, 1.0), 0.0);
     float mean = sum / count;
     return vec2(mean, sqrt(max(squares / count - mean * mean, 0.0)));
+}
+
+// The four strata of the lobe (film_rough_strata); a stratum with nothing in it has share 0 and no light.
+struct FilmStrata {
+    vec4 cosine;         // mean v·h per stratum, weighted by the light its directions bring
+    vec4 spread;         // v·h's standard deviation within each
+    vec4 share;          // the stratum's part of the lobe's directions above the surface (a uniform sky, a lamp)
+    vec3 w0, w1, w2, w3; // the environment's weights per stratum: together its mean under the lobe above the surface
+};
+
+// The strata a direction with v·h = c_h falls in, one-hot, at the edges μ + σ (−0.674, 0, 0.674) of
+// the lobe's v·h (the quartiles of a normal distribution).
+vec4 film_stratum_of(float c_h, vec3 edges) {
+    int k = int(c_h > edges.x) + int(c_h > edges.y) + int(c_h > edges.z);
+    return vec4(equal(ivec4(k), ivec4(0, 1, 2, 3)));
+}
+
+// Splits the lobe of `power` about the mirror direction of v into strata by v·h, given `seen` (mean and
+// standard deviation of v·h, film_rough_cosine). `sky`: under the spectral environment (its weights by
+// the filtered gather of spectral_environment_highlight, the disc lights by 16 points each); otherwise a
+// uniform light, each direction weighing alike.
+FilmStrata film_rough_strata(vec3 n, vec3 v, float power, vec2 seen, bool sky) {
+    const float pi = 3.14159265358979323846;
+    vec3 edges = seen.x + seen.y * vec3(-0.674, 0.0, 0.674);
+    vec3 r = reflect(-v, n), x, y;
+    spectral_frame(r, x, y);
+    FilmStrata strata;
+    strata.w0 = strata.w1 = strata.w2 = strata.w3 = vec3(0.0);
+    vec4 count = vec4(0.0), light = vec4(0.0), light_c = vec4(0.0), light_c2 = vec4(0.0);
+    int samples = spectral_lobe_samples(power);
+    for (int i = 0; i < samples; ++i) {
+        float u1 = (float(i) + 0.5) / float(samples), u2 = float(bitfieldReverse(uint(i))) * 2.3283064365386963e-10;
+        float c = pow(1.0 - u1, 1.0 / (power + 1.0)), sine = sqrt(max(0.0, 1.0 - c * c)), phi = 2.0 * pi * u2;
+        vec3 l = sine * cos(phi) * x + sine * sin(phi) * y + c * r;
+        float density = (power + 1.0) / (2.0 * pi) * pow(c, power);
+        if (dot(n, l) <= 0.0 || !(density > 0.0)) continue;
+        vec3 w = sky ? spectral_environment_filtered(l, 1.0 / (float(samples) * density)) : vec3(1.0);
+        float c_h = clamp(dot(v, normalize(v + l)), 0.0, 1.0), luminance = w.x + w.y + w.z;  // the spectra have luminance 1
+        vec4 at = film_stratum_of(c_h, edges);
+        strata.w0 += at.x * w;
+        strata.w1 += at.y * w;
+        strata.w2 += at.z * w;
+        strata.w3 += at.w * w;
+        count += at;
+        light += at * luminance;
+        light_c += at * (luminance * c_h);
+        light_c2 += at * (luminance * c_h * c_h);
+    }
+    float total = count.x + count.y + count.z + count.w;
+    if (!(total > 0.0)) {  // no direction above the surface: the mirror direction's angle, one stratum
+        strata.cosine = vec4(seen.x, 0.0, 0.0, 0.0);
+        strata.spread = vec4(0.0);
+        strata.share = vec4(1.0, 0.0, 0.0, 0.0);
+        return strata;
+    }
+    strata.share = count / total;
+    strata.w0 /= total;
+    strata.w1 /= total;
+    strata.w2 /= total;
+    strata.w3 /= total;
+    light /= total;
+    light_c /= total;
+    light_c2 /= total;
+    // The disc lights (the sun): 16 points of equal area over each, each point in its own stratum, over
+    // the lobe's mass above the surface (the sky's directions are already a mean over it).
+    float mass = spectral_lobe_mass(dot(n, v), power).x;
+    if (sky && mass > 0.0) {
+        vec3 ne = FxSpectralEnvironmentRotation * n, ve = FxSpectralEnvironmentRotation * v, re = reflect(-ve, ne);
+        const float golden = pi * (3.0 - sqrt(5.0));
+        for (int k = 0; k < kSpectralDiscs; ++k) {
+            vec4 place = texelFetch(FxSpectralDiscs, ivec2(2 * k, 0), 0), disc = texelFetch(FxSpectralDiscs, ivec2(2 * k + 1, 0), 0);
+            if (!(disc.a > 0.0)) continue;
+            vec3 dx, dy;
+            spectral_frame(place.xyz, dx, dy);
+            for (int j = 0; j < kSpectralDiscPoints; ++j) {
+                float radius = sqrt((float(j) + 0.5) / float(kSpectralDiscPoints)) * place.w, angle = golden * float(j);
+                vec3 l = normalize(place.xyz + tan(radius) * (cos(angle) * dx + sin(angle) * dy));
+                if (dot(ne, l) <= 0.0) continue;
+                vec3 w = disc.rgb * (disc.a * pow(max(dot(re, l), 0.0), power) / float(kSpectralDiscPoints) / pi * FxSpectralEnvironmentIntensity / mass);
+                float c_h = clamp(dot(ve, normalize(ve + l)), 0.0, 1.0), luminance = w.x + w.y + w.z;
+                vec4 at = film_stratum_of(c_h, edges);
+                strata.w0 += at.x * w;
+                strata.w1 += at.y * w;
+                strata.w2 += at.z * w;
+                strata.w3 += at.w * w;
+                light += at * luminance;
+                light_c += at * (luminance * c_h);
+                light_c2 += at * (luminance * c_h * c_h);
+            }
+        }
+    }
+    // Each stratum's angle weighted by its light (one without light keeps the middle of its edges: its
+    // angle does not matter then but for a lamp's image).
+    vec4 lit = vec4(greaterThan(light, vec4(0.0))), safe = max(light, vec4(1e-30));
+    vec4 middle = vec4(edges.x - 0.5 * seen.y, 0.5 * (edges.x + edges.y), 0.5 * (edges.y + edges.z), edges.z + 0.5 * seen.y);
+    strata.cosine = clamp(mix(middle, light_c / safe, lit), 0.0, 1.0);
+    strata.spread = lit * sqrt(max(light_c2 / safe - strata.cosine * strata.cosine, 0.0));
+    return strata;
 }

@@ -31,7 +31,7 @@ uniform float Variation < string UIName = "Variation"; float UIMin = 0; float UI
                           string UIHelp = "Height of the inverted paraboloid, in texture coordinates, added to the base thickness"; > = 300.0;
 
 uniform float Roughness < string UIName = "Roughness"; float UIMin = 0; float UIMax = 1; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 7;
-                          string UIHelp = "A rough film (microfacet width α = Roughness²): it mirrors the environment and a sized light through a glossy lobe, its colour taken at the lobe's mean half-vector angle (the Fourier films also damp by its spread of angles); 0: a smooth film. An approximation: under the sky about 0.2 CIEDE2000 from the lobe's integral at 0.2, 2 at 0.4, 6 at 0.7"; > = 0.0;
+                          string UIHelp = "A rough film (microfacet width α = Roughness²): it mirrors the environment and a sized light through a glossy lobe, split into four bands of viewing angle that each show the film at their own angle. 0: a smooth film. An approximation: under the sky about 0.1 CIEDE2000 from the exact integral on average at 0.2, 0.2 at 0.4, 0.35 at 0.7. Costs up to 8x a smooth film at 0.4"; > = 0.0;
 
 uniform int Layers < string UIName = "Layers"; int UIMin = 1; int UIMax = 16; string UIGroup = "Stack"; int UIOrder = 1;
                      string UIHelp = "Films on the substrate, alternating A (n1, varying thickness) and B from the top"; > = 4;
@@ -44,68 +44,7 @@ uniform float SecondDispersion < string UIName = "Layer B dispersion B"; float U
 uniform float SecondThickness < string UIName = "Layer B thickness"; float UIMin = 0; float UIMax = 2000; float UIStep = 1; string UIUnits = "nm";
                                 string UIGroup = "Stack"; int UIOrder = 3; > = 80.0;
 
-struct Film {
-    float cos_light, cos_view;
-    float cos0;       // cos θ0 in the outer medium, by Incidence
-    float cos0_spread;  // its standard deviation over a rough film's lobe (0: smooth)
-    float thickness;  // nm, at this fragment
-};
-
-// Under a spectral environment (the built-in sky) with Incidence = view, the film mirrors the sky:
-// the light at each wavelength is the sky's radiance from the mirror direction of the eye, whose
-// spectral weights film_at() finds once per fragment and keeps here.
-bool film_under_sky = false;
-vec3 film_sky_weights = vec3(0.0);
-// With Incidence = view the film also mirrors a sized scene light (a sphere, disc or rectangle;
-// area_light.glsl): its radiance in the mirror direction, over the uniform sky's (π x the lamp's,
-// whose irradiance is the sky's at 1), added to the light spectrum. `film_footprint` carries the
-// image's blur (how far the mirror direction turns across the pixel) to the CPU reference.
-float film_lamp = 0.0;
-vec4 film_footprint = vec4(0.0);
-
-// The eye's mirror direction about `normal`.
-vec3 mirror_of_eye(vec3 position, vec3 normal) { return reflect(-normalize(CameraPosition - position), normalize(normal)); }
-
-#include "film_roughness.glsl"  // a rough film's lobe and what it sees of the environment
-
-// `blur`: how far the mirror direction turns across the pixel (fx_pixel_turn of mirror_of_eye).
-Film film_at(vec3 position, vec3 normal, vec2 uv, float blur) {
-    vec3 n = normalize(normal);
-    vec3 v = normalize(CameraPosition - position);
-    Film f;
-    f.cos_light = clamp(dot(n, normalize(LightPosition - position)), 0.0, 1.0);
-    f.cos_view = clamp(dot(n, v), 0.0, 1.0);
-    float power = film_lobe_power();
-    vec2 seen = Incidence == 0 && Roughness > 0.0 ? film_rough_cosine(n, v, power) : vec2(f.cos_view, 0.0);
-    f.cos0 = Incidence == 1 ? f.cos_light : seen.x;
-    f.cos0_spread = Incidence == 1 ? 0.0 : seen.y;
-    vec2 centred = 2.0 * uv - 1.0;
-    f.thickness = Thickness + Variation * max(1.0 - dot(centred, centred), 0.0);
-    film_under_sky = Incidence == 0 && spectral_environment();
-    vec3 mirror = reflect(-v, n);
-    bool rough = Roughness > 0.0;
-    if (film_under_sky) film_sky_weights = rough ? film_rough_weights(n, v, power) : spectral_environment_weights(mirror);
-    // A rough film spreads a lamp's image over the lobe's width, 2 / √p (the ramp keeps its energy).
-    if (rough) blur += 2.0 / sqrt(power);
-    film_lamp = Incidence == 0 ? 3.14159265358979323846 * scene_light_radiance(position, mirror, blur) : 0.0;
-    film_footprint = vec4(blur, 0.0, 0.0, 0.0);
-    return f;
-}
-
-// The light at `nm`: the light spectrum, or the sky seen in the mirror direction; and the lamp's image.
-float light_at(int nm) {
-    float spectrum = spectrum_at(LightSpectrum, nm);
-    return (film_under_sky ? spectral_environment_radiance(film_sky_weights, nm) : spectrum) + film_lamp * spectrum;
-}
-
-// One wavelength's reflected light, weighted by the CMFs; ybar_sum collects k's denominator.
-void add_sample(inout vec3 xyz, inout float ybar_sum, int nm, float reflectance) {
-    vec3 cmf = cmf_at(nm);
-    xyz += light_at(nm) * reflectance * cmf;
-    ybar_sum += cmf.y;
-}
-
-vec4 film_colour(vec3 xyz, float ybar_sum) { return vec4(xyz_to_srgb(xyz * normalisation(ybar_sum) * Brightness), 1.0); }
+#include "thinfilm_pixel.glsl"  // the film at a pixel, what it mirrors, a rough film's strata
 
 // Eq. 62 / Code 13: the light angle refracted into the film, the eye's cosine squeezed to 0.9..1.
 GLSLShader PathDifferenceFS {
@@ -113,13 +52,19 @@ GLSLShader PathDifferenceFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
-        float cos_beta = refracted_cos(OuterIndex, FilmIndex, f.cos_light);
-        float cos_eye = f.cos_view * 0.1 + 0.9;
+        Film pixel = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
-        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1))
-            add_sample(xyz, ybar_sum, nm, fract(2.0 * f.thickness * FilmIndex * cos_beta * cos_eye / float(nm)));
+        int stratum = 0;
+        do {
+            if (film_stratum_empty(stratum)) continue;
+            Film f = film_stratum(pixel, stratum);
+            ybar_sum = 0.0;
+            float cos_beta = refracted_cos(OuterIndex, FilmIndex, f.cos_light);
+            float cos_eye = f.cos_view * 0.1 + 0.9;
+            for (int nm = Lower; nm <= Upper; nm += max(Steps, 1))
+                add_sample(xyz, ybar_sum, nm, fract(2.0 * f.thickness * FilmIndex * cos_beta * cos_eye / float(nm)));
+        } while (++stratum < film_strata_count);
         color = film_colour(xyz, ybar_sum);
         fx_capture();
         fx_capture_footprint = film_footprint;
@@ -148,11 +93,17 @@ GLSLShader FresnelFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
+        Film pixel = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
-        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1))
-            add_sample(xyz, ybar_sum, nm, durikovic(f.cos0, f.thickness, float(nm)));
+        int stratum = 0;
+        do {
+            if (film_stratum_empty(stratum)) continue;
+            Film f = film_stratum(pixel, stratum);
+            ybar_sum = 0.0;
+            for (int nm = Lower; nm <= Upper; nm += max(Steps, 1))
+                add_sample(xyz, ybar_sum, nm, durikovic(f.cos0, f.thickness, float(nm)));
+        } while (++stratum < film_strata_count);
         color = film_colour(xyz, ybar_sum);
         fx_capture();
         fx_capture_footprint = film_footprint;
@@ -165,20 +116,26 @@ GLSLShader FresnelFasterFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
-        float cos1 = refracted_cos(OuterIndex, FilmIndex, f.cos0);
-        float cos2 = refracted_cos(OuterIndex, SubstrateIndex, f.cos0);
-        vec2 r10 = fresnel_combined(cos1, f.cos0, FilmIndex, OuterIndex);
-        vec2 r12 = fresnel_combined(cos1, cos2, FilmIndex, SubstrateIndex);
-        vec2 r12r10 = r12 * r10;
-        float path = kTwoPi * 2.0 * FilmIndex * f.thickness * cos1;
+        Film pixel = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
-        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
-            float cgamma = cos(path / float(nm));
-            vec2 result = (r10 + r12 * cgamma) / (1.0 + r12r10 * cgamma);
-            add_sample(xyz, ybar_sum, nm, cos1 > 0.0 ? 0.5 * dot(result, result) : 1.0);
-        }
+        int stratum = 0;
+        do {
+            if (film_stratum_empty(stratum)) continue;
+            Film f = film_stratum(pixel, stratum);
+            ybar_sum = 0.0;
+            float cos1 = refracted_cos(OuterIndex, FilmIndex, f.cos0);
+            float cos2 = refracted_cos(OuterIndex, SubstrateIndex, f.cos0);
+            vec2 r10 = fresnel_combined(cos1, f.cos0, FilmIndex, OuterIndex);
+            vec2 r12 = fresnel_combined(cos1, cos2, FilmIndex, SubstrateIndex);
+            vec2 r12r10 = r12 * r10;
+            float path = kTwoPi * 2.0 * FilmIndex * f.thickness * cos1;
+            for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+                float cgamma = cos(path / float(nm));
+                vec2 result = (r10 + r12 * cgamma) / (1.0 + r12r10 * cgamma);
+                add_sample(xyz, ybar_sum, nm, cos1 > 0.0 ? 0.5 * dot(result, result) : 1.0);
+            }
+        } while (++stratum < film_strata_count);
         color = film_colour(xyz, ybar_sum);
         fx_capture();
         fx_capture_footprint = film_footprint;
@@ -191,27 +148,33 @@ GLSLShader FresnelAlternativeFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
-        float cos1 = refracted_cos(OuterIndex, FilmIndex, f.cos0);
-        float cos2 = refracted_cos(OuterIndex, SubstrateIndex, f.cos0);
-        // Eq. 64's path in the film minus the path outside, 2dn1/cos1 - 2dn0 tan1 sin0, is by Snell
-        // exactly 2dn1 cos1; written so, it does not lose the phase to cancellation near grazing
-        // incidence in float (thick films, n1 = n0).
-        float path = kTwoPi * 2.0 * f.thickness * FilmIndex * cos1;
-        vec2 r01 = fresnel_combined(f.cos0, cos1, OuterIndex, FilmIndex);
-        vec2 r10 = fresnel_combined(cos1, f.cos0, FilmIndex, OuterIndex);
-        vec2 r12 = fresnel_combined(cos1, cos2, FilmIndex, SubstrateIndex);
-        vec2 t01 = abs(1.0 - r01), t10 = abs(1.0 - r10);
-        vec2 trt = t01 * r12 * t10, trrrt = t01 * r12 * r10 * r12 * t10;
+        Film pixel = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
-        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
-            float delta = path / float(nm);
-            vec2 sine = trt * sin(delta) + trrrt * sin(2.0 * delta);
-            vec2 cosine = r01 * cos(delta) + trrrt * cos(2.0 * delta);
-            // Clamped to 1: the truncated sum can exceed it (docs/thin-films.md).
-            add_sample(xyz, ybar_sum, nm, cos1 > 0.0 ? min(0.5 * (dot(sine, sine) + dot(cosine, cosine)), 1.0) : 1.0);
-        }
+        int stratum = 0;
+        do {
+            if (film_stratum_empty(stratum)) continue;
+            Film f = film_stratum(pixel, stratum);
+            ybar_sum = 0.0;
+            float cos1 = refracted_cos(OuterIndex, FilmIndex, f.cos0);
+            float cos2 = refracted_cos(OuterIndex, SubstrateIndex, f.cos0);
+            // Eq. 64's path in the film minus the path outside, 2dn1/cos1 - 2dn0 tan1 sin0, is by Snell
+            // exactly 2dn1 cos1; written so, it does not lose the phase to cancellation near grazing
+            // incidence in float (thick films, n1 = n0).
+            float path = kTwoPi * 2.0 * f.thickness * FilmIndex * cos1;
+            vec2 r01 = fresnel_combined(f.cos0, cos1, OuterIndex, FilmIndex);
+            vec2 r10 = fresnel_combined(cos1, f.cos0, FilmIndex, OuterIndex);
+            vec2 r12 = fresnel_combined(cos1, cos2, FilmIndex, SubstrateIndex);
+            vec2 t01 = abs(1.0 - r01), t10 = abs(1.0 - r10);
+            vec2 trt = t01 * r12 * t10, trrrt = t01 * r12 * r10 * r12 * t10;
+            for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+                float delta = path / float(nm);
+                vec2 sine = trt * sin(delta) + trrrt * sin(2.0 * delta);
+                vec2 cosine = r01 * cos(delta) + trrrt * cos(2.0 * delta);
+                // Clamped to 1: the truncated sum can exceed it (docs/thin-films.md).
+                add_sample(xyz, ybar_sum, nm, cos1 > 0.0 ? min(0.5 * (dot(sine, sine) + dot(cosine, cosine)), 1.0) : 1.0);
+            }
+        } while (++stratum < film_strata_count);
         color = film_colour(xyz, ybar_sum);
         fx_capture();
         fx_capture_footprint = film_footprint;
@@ -220,19 +183,25 @@ GLSLShader FresnelAlternativeFS {
 
 // Airy's sum for one film on a substrate n2 + iκ, per polarisation, in complex form (one step of
 // eq. 67): exact, also past the critical angle and on metals.
-vec4 fresnel_exact_colour(Film f) {
-    vec2 n1 = vec2(FilmIndex, 0.0), n2 = vec2(SubstrateIndex, SubstrateKappa);
-    vec2 cos1 = refracted_cos_c(OuterIndex, n1, f.cos0), cos2 = refracted_cos_c(OuterIndex, n2, f.cos0);
-    Amplitude r01 = fresnel_c(vec2(OuterIndex, 0.0), vec2(f.cos0, 0.0), n1, cos1);
-    Amplitude r12 = fresnel_c(n1, cos1, n2, cos2);
-    vec2 path = kTwoPi * f.thickness * c_mul(n1, cos1);
+vec4 fresnel_exact_colour(Film pixel) {
     vec3 xyz = vec3(0.0);
     float ybar_sum = 0.0;
-    for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
-        vec2 s = hirayama_step(r01.s, r12.s, path / float(nm));
-        vec2 p = hirayama_step(r01.p, r12.p, path / float(nm));
-        add_sample(xyz, ybar_sum, nm, 0.5 * (dot(s, s) + dot(p, p)));
-    }
+    int stratum = 0;
+    do {
+        if (film_stratum_empty(stratum)) continue;
+        Film f = film_stratum(pixel, stratum);
+        ybar_sum = 0.0;
+        vec2 n1 = vec2(FilmIndex, 0.0), n2 = vec2(SubstrateIndex, SubstrateKappa);
+        vec2 cos1 = refracted_cos_c(OuterIndex, n1, f.cos0), cos2 = refracted_cos_c(OuterIndex, n2, f.cos0);
+        Amplitude r01 = fresnel_c(vec2(OuterIndex, 0.0), vec2(f.cos0, 0.0), n1, cos1);
+        Amplitude r12 = fresnel_c(n1, cos1, n2, cos2);
+        vec2 path = kTwoPi * f.thickness * c_mul(n1, cos1);
+        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+            vec2 s = hirayama_step(r01.s, r12.s, path / float(nm));
+            vec2 p = hirayama_step(r01.p, r12.p, path / float(nm));
+            add_sample(xyz, ybar_sum, nm, 0.5 * (dot(s, s) + dot(p, p)));
+        }
+    } while (++stratum < film_strata_count);
     return film_colour(xyz, ybar_sum);
 }
 
@@ -291,38 +260,44 @@ GLSLShader BubbleFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
-        float ratio = OuterIndex / FilmIndex;
-        // cos²θ1 without the cancellation of 1 - sin² near grazing incidence (see refracted_cos).
-        float cos1_squared = (1.0 - ratio * ratio) + ratio * ratio * f.cos0 * f.cos0;
+        Film pixel = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
-        if (cos1_squared >= 0.0) {
-            float cos1 = sqrt(cos1_squared);
-            vec2 r = fresnel_combined(f.cos0, cos1, OuterIndex, FilmIndex);
-            vec2 r2 = r * r;
-            vec2 one_minus_r2_squared = (1.0 - r2) * (1.0 - r2);
-            float half_path = 0.5 * kTwoPi * 2.0 * FilmIndex * f.thickness * cos1;
-            for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
-                float s = sin(half_path / float(nm));
-                vec2 numerator = 4.0 * r2 * s * s, denominator = one_minus_r2_squared + numerator;
-                // r² = 1 and sin = 0 together only at grazing incidence, where everything is reflected.
-                vec2 reflectance = mix(vec2(1.0), numerator / denominator, greaterThan(denominator, vec2(0.0)));
-                add_sample(xyz, ybar_sum, nm, 0.5 * (reflectance.x + reflectance.y));
+        int stratum = 0;
+        do {
+            if (film_stratum_empty(stratum)) continue;
+            Film f = film_stratum(pixel, stratum);
+            ybar_sum = 0.0;
+            float ratio = OuterIndex / FilmIndex;
+            // cos²θ1 without the cancellation of 1 - sin² near grazing incidence (see refracted_cos).
+            float cos1_squared = (1.0 - ratio * ratio) + ratio * ratio * f.cos0 * f.cos0;
+            if (cos1_squared >= 0.0) {
+                float cos1 = sqrt(cos1_squared);
+                vec2 r = fresnel_combined(f.cos0, cos1, OuterIndex, FilmIndex);
+                vec2 r2 = r * r;
+                vec2 one_minus_r2_squared = (1.0 - r2) * (1.0 - r2);
+                float half_path = 0.5 * kTwoPi * 2.0 * FilmIndex * f.thickness * cos1;
+                for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+                    float s = sin(half_path / float(nm));
+                    vec2 numerator = 4.0 * r2 * s * s, denominator = one_minus_r2_squared + numerator;
+                    // r² = 1 and sin = 0 together only at grazing incidence, where everything is reflected.
+                    vec2 reflectance = mix(vec2(1.0), numerator / denominator, greaterThan(denominator, vec2(0.0)));
+                    add_sample(xyz, ybar_sum, nm, 0.5 * (reflectance.x + reflectance.y));
+                }
+            } else {
+                float kappa = sqrt(-cos1_squared);
+                Amplitude r = fresnel_c(vec2(OuterIndex, 0.0), vec2(f.cos0, 0.0), vec2(FilmIndex, 0.0), vec2(0.0, kappa));
+                // sin²φ = (1 - Re r²) / 2 for |r| = 1, per polarisation.
+                vec2 sin2_phi = 0.5 * (1.0 - vec2(c_mul(r.s, r.s).x, c_mul(r.p, r.p).x));
+                float decay = 2.0 * kTwoPi * FilmIndex * f.thickness * kappa;  // -ln e times the wavelength
+                for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+                    float e = exp(-decay / float(nm));
+                    vec2 numerator = vec2((1.0 - e) * (1.0 - e)), denominator = numerator + 4.0 * e * sin2_phi;
+                    vec2 reflectance = mix(vec2(1.0), numerator / denominator, greaterThan(denominator, vec2(0.0)));
+                    add_sample(xyz, ybar_sum, nm, 0.5 * (reflectance.x + reflectance.y));
+                }
             }
-        } else {
-            float kappa = sqrt(-cos1_squared);
-            Amplitude r = fresnel_c(vec2(OuterIndex, 0.0), vec2(f.cos0, 0.0), vec2(FilmIndex, 0.0), vec2(0.0, kappa));
-            // sin²φ = (1 - Re r²) / 2 for |r| = 1, per polarisation.
-            vec2 sin2_phi = 0.5 * (1.0 - vec2(c_mul(r.s, r.s).x, c_mul(r.p, r.p).x));
-            float decay = 2.0 * kTwoPi * FilmIndex * f.thickness * kappa;  // -ln e times the wavelength
-            for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
-                float e = exp(-decay / float(nm));
-                vec2 numerator = vec2((1.0 - e) * (1.0 - e)), denominator = numerator + 4.0 * e * sin2_phi;
-                vec2 reflectance = mix(vec2(1.0), numerator / denominator, greaterThan(denominator, vec2(0.0)));
-                add_sample(xyz, ybar_sum, nm, 0.5 * (reflectance.x + reflectance.y));
-            }
-        }
+        } while (++stratum < film_strata_count);
         color = film_colour(xyz, ybar_sum);
         fx_capture();
         fx_capture_footprint = film_footprint;
@@ -335,20 +310,26 @@ GLSLShader FabryPerotFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
-        float cos1 = refracted_cos(OuterIndex, FilmIndex, f.cos0);
-        vec2 r = abs(fresnel_combined(f.cos0, cos1, OuterIndex, FilmIndex));
-        float mirror = 0.5 * (r.x + r.y);
-        float half_path = 0.5 * kTwoPi * 2.0 * FilmIndex * f.thickness * cos1;
+        Film pixel = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
-        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
-            float s = sin(half_path / float(nm));
-            // 1 - 1/(1 + F s²) with F = 4R/(1 - R)², as 4R s² / ((1 - R)² + 4R s²): no infinite finesse
-            // at grazing incidence (R = 1); a film of no thickness (s = 0) there reflects nothing.
-            float numerator = 4.0 * mirror * s * s, denominator = (1.0 - mirror) * (1.0 - mirror) + numerator;
-            add_sample(xyz, ybar_sum, nm, cos1 > 0.0 ? (denominator > 0.0 ? numerator / denominator : 0.0) : 1.0);
-        }
+        int stratum = 0;
+        do {
+            if (film_stratum_empty(stratum)) continue;
+            Film f = film_stratum(pixel, stratum);
+            ybar_sum = 0.0;
+            float cos1 = refracted_cos(OuterIndex, FilmIndex, f.cos0);
+            vec2 r = abs(fresnel_combined(f.cos0, cos1, OuterIndex, FilmIndex));
+            float mirror = 0.5 * (r.x + r.y);
+            float half_path = 0.5 * kTwoPi * 2.0 * FilmIndex * f.thickness * cos1;
+            for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+                float s = sin(half_path / float(nm));
+                // 1 - 1/(1 + F s²) with F = 4R/(1 - R)², as 4R s² / ((1 - R)² + 4R s²): no infinite finesse
+                // at grazing incidence (R = 1); a film of no thickness (s = 0) there reflects nothing.
+                float numerator = 4.0 * mirror * s * s, denominator = (1.0 - mirror) * (1.0 - mirror) + numerator;
+                add_sample(xyz, ybar_sum, nm, cos1 > 0.0 ? (denominator > 0.0 ? numerator / denominator : 0.0) : 1.0);
+            }
+        } while (++stratum < film_strata_count);
         color = film_colour(xyz, ybar_sum);
         fx_capture();
         fx_capture_footprint = film_footprint;
@@ -394,11 +375,17 @@ GLSLShader MultiLayerFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
+        Film pixel = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
-        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1))
-            add_sample(xyz, ybar_sum, nm, multilayer(f.cos0, f.thickness, float(nm)));
+        int stratum = 0;
+        do {
+            if (film_stratum_empty(stratum)) continue;
+            Film f = film_stratum(pixel, stratum);
+            ybar_sum = 0.0;
+            for (int nm = Lower; nm <= Upper; nm += max(Steps, 1))
+                add_sample(xyz, ybar_sum, nm, multilayer(f.cos0, f.thickness, float(nm)));
+        } while (++stratum < film_strata_count);
         color = film_colour(xyz, ybar_sum);
         fx_capture();
         fx_capture_footprint = film_footprint;
@@ -412,31 +399,37 @@ GLSLShader MultiLayerFasterFS {
     #include "capture.glsl"
     layout(location = 0) out vec4 color;
     void main() {
-        Film f = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
-        int count = clamp(Layers, 1, 16);
-        vec2 n0 = vec2(OuterIndex, 0.0), na = layer_index(1), nb = layer_index(2), ns = vec2(SubstrateIndex, SubstrateKappa);
-        vec2 cos0 = vec2(f.cos0, 0.0), cos_a = refracted_cos_c(OuterIndex, na, f.cos0), cos_b = refracted_cos_c(OuterIndex, nb, f.cos0);
-        vec2 cos_s = refracted_cos_c(OuterIndex, ns, f.cos0);
-        Amplitude top = fresnel_c(n0, cos0, na, cos_a), a_to_b = fresnel_c(na, cos_a, nb, cos_b), b_to_a = fresnel_c(nb, cos_b, na, cos_a);
-        Amplitude bottom = count % 2 == 1 ? fresnel_c(na, cos_a, ns, cos_s) : fresnel_c(nb, cos_b, ns, cos_s);
-        vec2 path_a = kTwoPi * f.thickness * c_mul(na, cos_a), path_b = kTwoPi * SecondThickness * c_mul(nb, cos_b);
+        Film pixel = film_at(fs_in.world_position, fs_in.normal, fs_in.uv, fx_pixel_turn(mirror_of_eye(fs_in.world_position, fs_in.normal)));
         vec3 xyz = vec3(0.0);
         float ybar_sum = 0.0;
-        for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
-            float inverse_nm = 1.0 / float(nm);
-            Amplitude gamma = bottom;
-            if (f.cos0 <= 0.0) {
-                add_sample(xyz, ybar_sum, nm, grazing_reflectance(na, nb, ns, count));
-                continue;
+        int stratum = 0;
+        do {
+            if (film_stratum_empty(stratum)) continue;
+            Film f = film_stratum(pixel, stratum);
+            ybar_sum = 0.0;
+            int count = clamp(Layers, 1, 16);
+            vec2 n0 = vec2(OuterIndex, 0.0), na = layer_index(1), nb = layer_index(2), ns = vec2(SubstrateIndex, SubstrateKappa);
+            vec2 cos0 = vec2(f.cos0, 0.0), cos_a = refracted_cos_c(OuterIndex, na, f.cos0), cos_b = refracted_cos_c(OuterIndex, nb, f.cos0);
+            vec2 cos_s = refracted_cos_c(OuterIndex, ns, f.cos0);
+            Amplitude top = fresnel_c(n0, cos0, na, cos_a), a_to_b = fresnel_c(na, cos_a, nb, cos_b), b_to_a = fresnel_c(nb, cos_b, na, cos_a);
+            Amplitude bottom = count % 2 == 1 ? fresnel_c(na, cos_a, ns, cos_s) : fresnel_c(nb, cos_b, ns, cos_s);
+            vec2 path_a = kTwoPi * f.thickness * c_mul(na, cos_a), path_b = kTwoPi * SecondThickness * c_mul(nb, cos_b);
+            for (int nm = Lower; nm <= Upper; nm += max(Steps, 1)) {
+                float inverse_nm = 1.0 / float(nm);
+                Amplitude gamma = bottom;
+                if (f.cos0 <= 0.0) {
+                    add_sample(xyz, ybar_sum, nm, grazing_reflectance(na, nb, ns, count));
+                    continue;
+                }
+                for (int j = count; j >= 1; --j) {
+                    Amplitude r = j == 1 ? top : (j % 2 == 1 ? b_to_a : a_to_b);
+                    vec2 phase = (j % 2 == 1 ? path_a : path_b) * inverse_nm;
+                    gamma.s = hirayama_step(r.s, gamma.s, phase);
+                    gamma.p = hirayama_step(r.p, gamma.p, phase);
+                }
+                add_sample(xyz, ybar_sum, nm, 0.5 * (dot(gamma.s, gamma.s) + dot(gamma.p, gamma.p)));
             }
-            for (int j = count; j >= 1; --j) {
-                Amplitude r = j == 1 ? top : (j % 2 == 1 ? b_to_a : a_to_b);
-                vec2 phase = (j % 2 == 1 ? path_a : path_b) * inverse_nm;
-                gamma.s = hirayama_step(r.s, gamma.s, phase);
-                gamma.p = hirayama_step(r.p, gamma.p, phase);
-            }
-            add_sample(xyz, ybar_sum, nm, 0.5 * (dot(gamma.s, gamma.s) + dot(gamma.p, gamma.p)));
-        }
+        } while (++stratum < film_strata_count);
         color = film_colour(xyz, ybar_sum);
         fx_capture();
         fx_capture_footprint = film_footprint;

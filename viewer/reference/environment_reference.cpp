@@ -114,14 +114,46 @@ glm::dvec3 EnvironmentLookup::spectral_irradiance(const glm::dvec3& n, double* s
     return glm::dvec3(w.value) * intensity_;
 }
 
-glm::dvec3 EnvironmentLookup::spectral_highlight(const glm::dvec3& n, const glm::dvec3& v, bool blinn, double power, double* seam) const {
-    const int samples = power >= 64.0 ? 32 : power >= 8.0 ? 64 : 256;  // spectral_lobe_samples()
+glm::dvec3 EnvironmentLookup::spectral_filtered(const glm::dvec3& world, double share, double* seam) const {
     constexpr double kPi = std::numbers::pi;
     effect::SamplerState linear;
     linear.min_filter = linear.mag_filter = GL_LINEAR;
     // As the GPU: no level coarser than 8² a face (every texel of a smaller one touches a corner).
     const double size = maps_->spectral_lobe_level(0).width();
     const double last = std::min<double>(maps_->spectral_lobe_levels() - 1, std::max(std::log2(size / 8.0), 0.0));
+    const double lod = std::clamp(0.5 * std::log2(share * 6.0 * size * size / (4.0 * kPi)) + 1.0, 0.0, last), low = std::floor(lod);
+    const glm::dvec3 d = rotation_ * world;
+    const CubeSample p = sample_cube(maps_->spectral_lobe_level(static_cast<int>(low)), linear, false, d);
+    const CubeSample q = sample_cube(maps_->spectral_lobe_level(static_cast<int>(std::min(low + 1.0, last))), linear, false, d);
+    const double mixed = lod - low;
+    if (seam) *seam = std::max(p.seam_spread, q.seam_spread) + ((1.0 - mixed) * p.footprint_spread + mixed * q.footprint_spread) / 256.0;
+    return glm::mix(glm::dvec3(p.value), glm::dvec3(q.value), mixed) * intensity_;
+}
+
+std::vector<EnvironmentLookup::DiscPoint> EnvironmentLookup::spectral_disc_points() const {
+    // 16 points of equal area over each disc (a sunflower spiral), placed in environment space as the GPU does.
+    const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
+    const glm::dmat3 to_world = glm::transpose(rotation_);
+    std::vector<DiscPoint> points;
+    for (const lighting::DiscLight& disc : maps_->unfiltered().spectral->discs) {
+        glm::dvec3 dx, dy;
+        duff_frame(disc.direction, dx, dy);
+        for (int j = 0; j < 16; ++j) {
+            const double r = std::sqrt((j + 0.5) / 16.0) * disc.angular_radius, angle = golden * j;
+            const glm::dvec3 l = glm::normalize(disc.direction + std::tan(r) * (std::cos(angle) * dx + std::sin(angle) * dy));
+            points.push_back({to_world * l, disc.radiance * disc.solid_angle() / 16.0 / std::numbers::pi * intensity_});
+        }
+    }
+    return points;
+}
+
+glm::dvec2 EnvironmentLookup::spectral_lobe_mass(double nv, double power) const {
+    return glm::dvec2(maps_->lobe_mass().lookup(nv, lighting::lobe_mass_row(power))) * lighting::lobe_mass_unit(power);
+}
+
+glm::dvec3 EnvironmentLookup::spectral_highlight(const glm::dvec3& n, const glm::dvec3& v, bool blinn, double power, double* seam) const {
+    const int samples = power >= 64.0 ? 32 : power >= 8.0 ? 64 : 256;  // spectral_lobe_samples()
+    constexpr double kPi = std::numbers::pi;
     const glm::dvec3 axis = blinn ? n : 2.0 * glm::dot(n, v) * n - v;
     glm::dvec3 x, y;
     duff_frame(axis, x, y);
@@ -141,46 +173,22 @@ glm::dvec3 EnvironmentLookup::spectral_highlight(const glm::dvec3& n, const glm:
             weight = 4.0 * vh;
         }
         if (glm::dot(n, l) <= 0.0 || !(density > 0.0)) continue;
-        // The level whose texels cover the sample's share of the sphere, one coarser; two mixed.
-        const double share = 1.0 / (samples * density);
-        const double lod = std::clamp(0.5 * std::log2(share * 6.0 * size * size / (4.0 * kPi)) + 1.0, 0.0, last), low = std::floor(lod);
-        const glm::dvec3 d = rotation_ * l;
-        const CubeSample p = sample_cube(maps_->spectral_lobe_level(static_cast<int>(low)), linear, false, d);
-        const CubeSample q = sample_cube(maps_->spectral_lobe_level(static_cast<int>(std::min(low + 1.0, last))), linear, false, d);
-        sum += weight * glm::mix(glm::dvec3(p.value), glm::dvec3(q.value), lod - low);
-        const double mixed = lod - low;
-        spread += weight * (std::max(p.seam_spread, q.seam_spread) + ((1.0 - mixed) * p.footprint_spread + mixed * q.footprint_spread) / 256.0);
+        double seam_here = 0.0;
+        sum += weight * spectral_filtered(l, 1.0 / (samples * density), &seam_here);
+        spread += weight * seam_here;
         total += weight;
     }
     // The lobe's mass above the surface (the table, as the GPU samples it) times the mean under it.
-    const glm::dvec3 mass = maps_->lobe_mass().lookup(glm::dot(n, v), lighting::lobe_mass_row(power));
-    const double scale = total > 0.0 ? (blinn ? mass.y : mass.x) * lighting::lobe_mass_unit(power) / total * intensity_ : 0.0;
-    if (seam) *seam = spread * scale;
-    // The disc lights: 16 points of equal area over each (a sunflower spiral), in environment space.
-    const glm::dvec3 ne = rotation_ * n, ve = rotation_ * v, re = 2.0 * glm::dot(ne, ve) * ne - ve;
-    const double golden = kPi * (3.0 - std::sqrt(5.0));
+    const glm::dvec2 mass = spectral_lobe_mass(glm::dot(n, v), power);
+    const double scale = total > 0.0 ? (blinn ? mass.y : mass.x) / total : 0.0;
+    if (seam) *seam = spread * scale * intensity_;
+    const glm::dvec3 r = 2.0 * glm::dot(n, v) * n - v;
     glm::dvec3 discs(0.0);
-    for (const lighting::DiscLight& disc : maps_->unfiltered().spectral->discs) {
-        glm::dvec3 dx, dy;
-        duff_frame(disc.direction, dx, dy);
-        double lobe = 0.0;
-        for (int j = 0; j < 16; ++j) {
-            const double r = std::sqrt((j + 0.5) / 16.0) * disc.angular_radius, angle = golden * j;
-            const glm::dvec3 l = glm::normalize(disc.direction + std::tan(r) * (std::cos(angle) * dx + std::sin(angle) * dy));
-            if (glm::dot(ne, l) <= 0.0) continue;
-            lobe += std::pow(std::max(blinn ? glm::dot(ne, glm::normalize(l + ve)) : glm::dot(re, l), 0.0), power);
-        }
-        discs += disc.radiance * disc.solid_angle() * lobe / 16.0;
+    for (const DiscPoint& point : spectral_disc_points()) {
+        if (glm::dot(n, point.direction) <= 0.0) continue;
+        discs += point.weights * std::pow(std::max(blinn ? glm::dot(n, glm::normalize(point.direction + v)) : glm::dot(r, point.direction), 0.0), power);
     }
-    return sum * scale + discs / kPi * intensity_;
-}
-
-glm::dvec3 EnvironmentLookup::spectral_lobe_mean(const glm::dvec3& n, const glm::dvec3& v, double power, double* seam) const {
-    const double mass = maps_->lobe_mass().lookup(glm::dot(n, v), lighting::lobe_mass_row(power)).x * lighting::lobe_mass_unit(power);
-    if (!(mass > 0.0)) return glm::dvec3(0.0);
-    const glm::dvec3 highlight = spectral_highlight(n, v, false, power, seam);
-    if (seam) *seam /= mass;
-    return highlight / mass;
+    return sum * scale + discs;
 }
 
 void EnvironmentLookup::visit_exact_integral(const std::function<double(const glm::dvec3&)>& g, const Draw& draw, int samples, unsigned seed,

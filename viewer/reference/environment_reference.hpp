@@ -41,9 +41,19 @@ public:
     // the spread at cube corners and the footprints' spread over 256 (sub-texel precision).
     glm::dvec3 spectral_irradiance(const glm::dvec3& n, double* seam = nullptr) const;
     glm::dvec3 spectral_highlight(const glm::dvec3& n, const glm::dvec3& v, bool blinn, double power, double* seam = nullptr) const;
-    // The weights averaged under a Phong lobe of `power` about the mirror direction of v: the
-    // highlight over the lobe's mass above the surface (effects/lib/film_roughness.glsl, a rough film).
-    glm::dvec3 spectral_lobe_mean(const glm::dvec3& n, const glm::dvec3& v, double power, double* seam = nullptr) const;
+    // The parts of spectral_highlight: the weights without the disc lights averaged over the cone a
+    // sample of `share` steradians stands for (spectral_environment_filtered: the level whose texels
+    // cover it, one coarser, two mixed; `seam` the GL filtering's spread before the intensity); the disc
+    // lights' 16 points each (world directions, each with the weights its point brings per unit lobe:
+    // radiance · solid angle / 16 / π · intensity); a Phong (x) and Blinn (y) lobe's mass above the
+    // surface from the table as the GPU samples it.
+    glm::dvec3 spectral_filtered(const glm::dvec3& world, double share, double* seam = nullptr) const;
+    struct DiscPoint {
+        glm::dvec3 direction, weights;
+    };
+    std::vector<DiscPoint> spectral_disc_points() const;
+    glm::dvec2 spectral_lobe_mass(double nv, double power) const;
+    double intensity() const { return intensity_; }
     // Ground truth of (1/π) ∫ g(l) w(l) dl over the model's exact weights: `samples` directions drawn by
     // `draw` (a direction and its density for a point of the unit square; a Hammersley set turned by
     // `seed`), none inside a disc light, each disc by its 512-point quadrature.

@@ -20,6 +20,7 @@
 #include "reference/environment_reference.hpp"
 #include "reference/film_fourier.hpp"
 #include "reference/lamp_image.hpp"
+#include "reference/film_strata.hpp"
 #include "reference/rough_film_truth.hpp"
 #include "reference/spectral_integration.hpp"
 #include "reference/tangent_frame.hpp"
@@ -45,7 +46,27 @@ struct Film {
     double roughness = 0;  // Roughness: the environment seen through a Phong lobe (film_roughness.glsl)
     // How far GL's filtering leaves a rough film's sky weights open (cube corners, sub-texel precision).
     double sky_seam = 0;
+    // A rough film's strata of its lobe (film_strata.hpp); each technique sums its colour over them,
+    // each stratum a Film of its own angle, weights and `share` of a uniform sky's and a lamp's light.
+    std::optional<FilmStrata> strata;
+    double share = 1.0;
 };
+
+// The films a technique sums (thinfilm.fx film_stratum): the pixel's film, or a rough film's strata.
+std::vector<Film> film_strata(const Film& f) {
+    if (!f.strata) return {f};
+    std::vector<Film> strata;
+    for (size_t s = 0; s < 4; ++s) {
+        if (f.strata->empty(s)) continue;
+        Film g = f;
+        g.cos0 = f.strata->cosine[s];
+        g.cos0_spread = f.strata->spread[s];
+        g.share = f.strata->share[s];
+        if (g.sky) g.sky = f.strata->weights[s];
+        strata.push_back(g);
+    }
+    return strata;
+}
 
 // film_roughness.glsl's lobe: Phong of p = (1/α² − 1)/2 for α = roughness², within [1, 1e5].
 double film_lobe_power(double roughness) {
@@ -79,7 +100,7 @@ glm::dvec2 film_rough_cosine(const glm::dvec3& n, const glm::dvec3& v, double po
 // image (thinfilm.fx light_at).
 double light_at(const Film& f, const SpectralSetup& s, int light, int nm) {
     const double spectrum = spectral::packed_value(*s.spectra, light, nm);
-    return (f.sky ? f.environment->spectral_radiance(*f.sky, nm) : spectrum) + f.lamp * spectrum;
+    return (f.sky ? f.environment->spectral_radiance(*f.sky, nm) : f.share * spectrum) + f.lamp * f.share * spectrum;
 }
 
 Film film(const ShadingInput& in, const ReferenceContext& c) {
@@ -98,9 +119,14 @@ Film film(const ShadingInput& in, const ReferenceContext& c) {
     f.cos0 = view ? seen.x : f.cos_light;
     f.cos0_spread = view ? seen.y : 0.0;
     f.environment = EnvironmentLookup::from(c);
-    if (c.number("Incidence") == 0.0 && f.environment && f.environment->spectral() && c.environment->intensity > 0)
-        f.sky = f.roughness > 0 ? f.environment->spectral_lobe_mean(n, v, film_lobe_power(f.roughness), &f.sky_seam)
-                                : f.environment->spectral_weights(mirror);
+    const bool under_sky = view && f.environment && f.environment->spectral() && c.environment->intensity > 0;
+    if (view && f.roughness > 0) {
+        f.strata = film_rough_strata(n, v, film_lobe_power(f.roughness), seen, under_sky ? &*f.environment : nullptr);
+        f.sky_seam = f.strata->seam;
+        if (under_sky) f.sky = f.strata->weights[0] + f.strata->weights[1] + f.strata->weights[2] + f.strata->weights[3];
+    } else if (under_sky) {
+        f.sky = f.environment->spectral_weights(mirror);
+    }
     // The GPU's blur of the image (how far the mirror direction turns across the pixel), as captured.
     if (c.number("Incidence") == 0.0) f.lamp = std::numbers::pi * scene_light_radiance(in, mirror, in.footprint.x);
     // An inverted paraboloid over the texture square, peaking at its centre (fig. 27).
@@ -166,8 +192,13 @@ Reflectance by_matrices(StackOf stack_of) {
 std::array<double, 4> film_colour(const Film& f, const ReferenceContext& c, const Reflectance& reflectance) {
     const SpectralSetup s = spectral_setup(c);
     const int light = static_cast<int>(c.number("LightSpectrum"));
-    const AtWavelength at = reflectance(f);
-    return to_rgba(integrate(s, false, [&](int nm) { return light_at(f, s, light, nm) * at(nm); }), s.mapping);
+    spectral::Vec3 xyz{0, 0, 0};
+    for (const Film& stratum : film_strata(f)) {
+        const AtWavelength at = reflectance(stratum);
+        const spectral::Vec3 part = integrate(s, false, [&](int nm) { return light_at(stratum, s, light, nm) * at(nm); });
+        for (size_t i = 0; i < 3; ++i) xyz[i] += part[i];
+    }
+    return to_rgba(xyz, s.mapping);
 }
 
 // The phase's float rounding is independent from wavelength to wavelength, so the colour error
@@ -216,10 +247,14 @@ double phase_sensitivity(const Film& at, const FilmColour& colour) {
         compare(thicker);
         Film turned = at;
         for (double* cosine : {&turned.cos0, &turned.cos_light, &turned.cos_view}) *cosine = std::clamp(*cosine + sign * 5e-7, 0.0, 1.0);
+        if (turned.strata)
+            for (double& cosine : turned.strata->cosine) cosine = std::clamp(cosine + sign * 5e-7, 0.0, 1.0);
         compare(turned);
         if (at.sky && at.sky_seam > 0) {  // a rough film's filtered sky weights, as open as GL leaves them
             Film filtered = at;
             *filtered.sky += sign * at.sky_seam;
+            if (filtered.strata)
+                for (glm::dvec3& w : filtered.strata->weights) w += sign * at.sky_seam;
             compare(filtered);
         }
     }
@@ -292,7 +327,8 @@ double path_difference_slack(const ShadingInput& in, const ReferenceContext& c, 
 // relations), each term's F(m D) from the same table the GPU reads, interpolated in double, and the
 // same stopping rule. Where no series exists (the film past its critical angle) both take the exact
 // sum at every nm over 360-830 with 1 / Σ ȳ: here by characteristic matrices.
-std::array<double, 4> fourier_colour(const Film& f, const ReferenceContext& c, optics::Complex substrate) {
+// One stratum's XYZ (a smooth film's whole), with the brightness.
+spectral::Vec3 fourier_xyz(const Film& f, const ReferenceContext& c, optics::Complex substrate) {
     const SpectralSetup setup = spectral_setup(c);
     const int light = static_cast<int>(c.number("LightSpectrum"));
     const int polarisation = static_cast<int>(c.number("Polarisation"));
@@ -307,20 +343,29 @@ std::array<double, 4> fourier_colour(const Film& f, const ReferenceContext& c, o
     const auto series = f.sky ? (f.lamp > 0 ? std::nullopt
                                             : film_xyz_fourier_table(*f.environment->spectral_fourier(), setup.observer,
                                                                      TableLight{0, 3, {f.sky->x, f.sky->y, f.sky->z}}, film, technique))
-                              : film_xyz_fourier_table(c.generated("FilmFourier"), setup.observer, TableLight{light, 1, {1.0 + f.lamp, 0.0, 0.0}},
-                                                       film, technique);
+                              : film_xyz_fourier_table(c.generated("FilmFourier"), setup.observer,
+                                                       TableLight{light, 1, {f.share * (1.0 + f.lamp), 0.0, 0.0}}, film, technique);
     if (series) {
         spectral::Vec3 xyz = *series;
         for (double& v : xyz) v *= setup.brightness;
-        return to_rgba(xyz, setup.mapping);
+        return xyz;
     }
     const SpectralSetup every_nm = every_nm_setup(c);
     const optics::Stack stack{f.n0, {{f.n1, f.thickness}}, substrate};
-    return to_rgba(integrate(every_nm, true, [&](int nm) {
+    return integrate(every_nm, true, [&](int nm) {
         return light_at(f, setup, light, nm) *
                (technique.weight_s * optics::transfer_matrix(stack, nm, f.cos0, optics::Polarisation::S).reflectance +
                 technique.weight_p * optics::transfer_matrix(stack, nm, f.cos0, optics::Polarisation::P).reflectance);
-    }), setup.mapping);
+    });
+}
+
+std::array<double, 4> fourier_colour(const Film& f, const ReferenceContext& c, optics::Complex substrate) {
+    spectral::Vec3 xyz{0, 0, 0};
+    for (const Film& stratum : film_strata(f)) {
+        const spectral::Vec3 part = fourier_xyz(stratum, c, substrate);
+        for (size_t i = 0; i < 3; ++i) xyz[i] += part[i];
+    }
+    return to_rgba(xyz, spectral_setup(c).mapping);
 }
 
 Reference fourier_reference(bool free_film) {

@@ -1,0 +1,79 @@
+#include "reference/film_strata.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "lighting/image_based_lighting.hpp"
+#include "reference/tangent_frame.hpp"
+
+namespace fxview::reference {
+
+FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double power, const glm::dvec2& seen, const EnvironmentLookup* sky) {
+    constexpr double kPi = std::numbers::pi;
+    const glm::dvec3 edges = seen.x + seen.y * glm::dvec3(-0.674, 0.0, 0.674);
+    const auto stratum_of = [&](double c_h) { return static_cast<size_t>(int(c_h > edges.x) + int(c_h > edges.y) + int(c_h > edges.z)); };
+    const glm::dvec3 r = 2.0 * glm::dot(n, v) * n - v;
+    glm::dvec3 x, y;
+    duff_frame(r, x, y);
+    FilmStrata strata;
+    std::array<double, 4> count{}, light{}, light_c{}, light_c2{};
+    double seam = 0.0;
+    const auto add = [&](size_t s, const glm::dvec3& w, double c_h) {
+        const double luminance = w.x + w.y + w.z;  // the three spectra have luminance 1
+        strata.weights[s] += w;
+        light[s] += luminance;
+        light_c[s] += luminance * c_h;
+        light_c2[s] += luminance * c_h * c_h;
+    };
+    const int samples = power >= 64.0 ? 32 : power >= 8.0 ? 64 : 256;  // spectral_lobe_samples()
+    for (int i = 0; i < samples; ++i) {
+        const glm::dvec2 u = lighting::hammersley(static_cast<unsigned>(i), samples);
+        const double c = std::pow(1.0 - u.x, 1.0 / (power + 1.0)), sine = std::sqrt(std::max(0.0, 1.0 - c * c)), phi = 2.0 * kPi * u.y;
+        const glm::dvec3 l = sine * std::cos(phi) * x + sine * std::sin(phi) * y + c * r;
+        const double density = (power + 1.0) / (2.0 * kPi) * std::pow(c, power);
+        if (glm::dot(n, l) <= 0.0 || !(density > 0.0)) continue;
+        double seam_here = 0.0;
+        const glm::dvec3 w = sky ? sky->spectral_filtered(l, 1.0 / (samples * density), &seam_here) : glm::dvec3(1.0);
+        const double c_h = std::clamp(glm::dot(v, glm::normalize(v + l)), 0.0, 1.0);
+        const size_t s = stratum_of(c_h);
+        add(s, w, c_h);
+        count[s] += 1.0;
+        seam += seam_here;
+    }
+    const double total = count[0] + count[1] + count[2] + count[3];
+    if (!(total > 0.0)) {  // no direction above the surface: the mirror direction's angle, one stratum
+        strata.cosine = {seen.x, 0.0, 0.0, 0.0};
+        strata.share = {1.0, 0.0, 0.0, 0.0};
+        strata.weights = {};
+        return strata;
+    }
+    for (size_t s = 0; s < 4; ++s) {
+        strata.share[s] = count[s] / total;
+        strata.weights[s] /= total;
+        light[s] /= total;
+        light_c[s] /= total;
+        light_c2[s] /= total;
+    }
+    strata.seam = sky ? seam / total * sky->intensity() : 0.0;
+    // The disc lights' points, over the lobe's mass above the surface.
+    const double mass = sky ? sky->spectral_lobe_mass(glm::dot(n, v), power).x : 0.0;
+    if (sky && mass > 0.0) {
+        for (const EnvironmentLookup::DiscPoint& point : sky->spectral_disc_points()) {
+            if (glm::dot(n, point.direction) <= 0.0) continue;
+            const glm::dvec3 w = point.weights * (std::pow(std::max(glm::dot(r, point.direction), 0.0), power) / mass);
+            const double c_h = std::clamp(glm::dot(v, glm::normalize(v + point.direction)), 0.0, 1.0);
+            add(stratum_of(c_h), w, c_h);
+        }
+    }
+    // Each stratum's angle weighted by its light; one without light keeps the middle of its edges.
+    const std::array<double, 4> middle{edges.x - 0.5 * seen.y, 0.5 * (edges.x + edges.y), 0.5 * (edges.y + edges.z), edges.z + 0.5 * seen.y};
+    for (size_t s = 0; s < 4; ++s) {
+        const bool lit = light[s] > 0.0;
+        strata.cosine[s] = std::clamp(lit ? light_c[s] / light[s] : middle[s], 0.0, 1.0);
+        strata.spread[s] = lit ? std::sqrt(std::max(light_c2[s] / light[s] - strata.cosine[s] * strata.cosine[s], 0.0)) : 0.0;
+    }
+    return strata;
+}
+
+}  // namespace fxview::reference

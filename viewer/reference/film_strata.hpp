@@ -1,0 +1,24 @@
+// A rough film's lobe split into four strata by the angle the film is seen at (v·h): CPU twin of
+// film_rough_strata in effects/lib/film_roughness.glsl, from its documented arithmetic.
+#pragma once
+#include <array>
+
+#include <glm/glm.hpp>
+
+#include "reference/environment_reference.hpp"
+
+namespace fxview::reference {
+
+struct FilmStrata {
+    std::array<double, 4> cosine{}, spread{}, share{};  // mean v·h (light-weighted), its deviation, part of the directions
+    std::array<glm::dvec3, 4> weights{};               // the environment's weights per stratum (sum: the lobe's mean)
+    double seam = 0;                                   // how far GL's filtering leaves the weights open
+    bool empty(size_t s) const { return share[s] == 0.0 && weights[s] == glm::dvec3(0.0); }
+};
+
+// The Phong lobe of `power` about the mirror direction of v, split at μ + σ (−0.674, 0, 0.674) of
+// `seen` = (μ, σ) of v·h. `sky`: the spectral environment seen through it (filtered gather, disc
+// lights by their points); null: a uniform light, every direction alike.
+FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double power, const glm::dvec2& seen, const EnvironmentLookup* sky);
+
+}  // namespace fxview::reference
