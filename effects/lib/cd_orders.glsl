@@ -115,7 +115,8 @@ void lamp_orders_banded(bool flat_lamp, bool disc, Disc d, FlatLightView flat_vi
                         int most, inout vec3 lamp) {
     float tracks = float(max(Tracks, 1)), spacing = max(TrackSpacing, 1.0), centre = view.x + light.x;
     int step = max(Steps, 1), last_sample = max(Upper - Lower, 0) / step, per_band = max(LampBand / step, 1);
-    for (int k0 = 0; k0 <= last_sample; k0 += per_band) {
+    int k0 = 0;
+    do {
         int k1 = min(k0 + per_band, last_sample), end = k1 == last_sample ? k1 : k1 - 1;
         float span = float(max(k1 - k0, 1));
         float ra = float(Lower + k0 * step) / spacing, rb = float(Lower + k1 * step) / spacing, rm = 0.5 * (ra + rb);
@@ -126,7 +127,8 @@ void lamp_orders_banded(bool flat_lamp, bool disc, Disc d, FlatLightView flat_vi
         vec3 along = vec3(0.0);                         // coefficients of the moments 0, 1, 2
         vec4 crossing0 = vec4(0.0), crossing1 = vec4(0.0);  // u_a, du, s_a, ds of two orders crossing the edge
         int crossings = 0;
-        for (int m = from; m <= to; ++m) {
+        int m = from;
+        if (from <= to) do {
             vec4 a = lamp_order_record(flat_lamp, disc, d, flat_view, view, edge, view_spread, turn_spread, m, ra, others_a);
             vec4 b = lamp_order_record(flat_lamp, disc, d, flat_view, view, edge, view_spread, turn_spread, m, rb, others_b);
             if (a.w == 0.0 && b.w == 0.0) continue;  // evanescent at both ends
@@ -166,18 +168,20 @@ void lamp_orders_banded(bool flat_lamp, bool disc, Disc d, FlatLightView flat_vi
                     lamp += ((a.z + j * ds) * clamp(a.x + j * du, 0.0, 1.0)) * light_cmf(k);
                 }
             }
-        }
+        } while (++m <= to);
         // The two orders crossing the light's edge in one pass over the samples, the others from the
         // band's moments.
-        for (int k = k0; crossings > 0 && k <= end; ++k) {
+        int k = k0;
+        if (crossings > 0) do {
             float j = float(k - k0);
             lamp += light_cmf(k) * ((crossing0.z + j * crossing0.w) * clamp(crossing0.x + j * crossing0.y, 0.0, 1.0) +
                                     (crossing1.z + j * crossing1.w) * clamp(crossing1.x + j * crossing1.y, 0.0, 1.0));
-        }
+        } while (++k <= end);
         int band = k0 / per_band;
         lamp += along.x * lamp_band_moment(band, 0) + along.y * lamp_band_moment(band, 1) + along.z * lamp_band_moment(band, 2);
         if (end == last_sample) break;  // a last band that ends on the last sample has taken it
-    }
+        k0 += per_band;
+    } while (k0 <= last_sample);
 }
 
 // The scene's lamp through the orders at every sampled nm: Σ S x̄ȳz̄ Σ_m efficiency · ramp, into `lamp`. `flat_lamp` and
