@@ -16,6 +16,14 @@ struct FilmStrata {
     bool empty(size_t s) const { return share[s] == 0.0 && weights[s] == glm::dvec3(0.0); }
 };
 
+// A rough film's lobe (film_roughness.glsl film_lobe_power): Phong of p = (1/α² − 1)/2 for
+// α = roughness², within [1, 1e5].
+double film_lobe_power(double roughness);
+
+// The mean and standard deviation of v·h over 32 of the lobe's directions above the surface
+// (film_rough_cosine): where the strata's edges go.
+glm::dvec2 film_rough_cosine(const glm::dvec3& n, const glm::dvec3& v, double power);
+
 // The Phong lobe of `power` about the mirror direction of v, split at μ + σ (−0.674, 0, 0.674) of
 // `seen` = (μ, σ) of v·h. `sky`: the spectral environment seen through it (filtered gather, disc
 // lights by their points); null: a uniform light, every direction alike.

@@ -68,34 +68,6 @@ std::vector<Film> film_strata(const Film& f) {
     return strata;
 }
 
-// film_roughness.glsl's lobe: Phong of p = (1/α² − 1)/2 for α = roughness², within [1, 1e5].
-double film_lobe_power(double roughness) {
-    const double alpha = std::max(roughness * roughness, 1e-3);
-    return std::clamp((1.0 / (alpha * alpha) - 1.0) / 2.0, 1.0, 1e5);
-}
-
-// film_roughness.glsl's film_rough_cosine: the mean and standard deviation of v·h over 32 of the lobe's
-// directions above the surface.
-glm::dvec2 film_rough_cosine(const glm::dvec3& n, const glm::dvec3& v, double power) {
-    const glm::dvec3 r = 2.0 * glm::dot(n, v) * n - v;
-    glm::dvec3 x, y;
-    duff_frame(r, x, y);
-    double sum = 0.0, squares = 0.0, count = 0.0;
-    for (unsigned i = 0; i < 32; ++i) {
-        const glm::dvec2 u = lighting::hammersley(i, 32);
-        const double c = std::pow(1.0 - u.x, 1.0 / (power + 1.0)), sine = std::sqrt(std::max(0.0, 1.0 - c * c)), phi = 2.0 * std::numbers::pi * u.y;
-        const glm::dvec3 l = sine * std::cos(phi) * x + sine * std::sin(phi) * y + c * r;
-        if (glm::dot(n, l) <= 0.0) continue;
-        const double c_h = std::clamp(glm::dot(v, glm::normalize(v + l)), 0.0, 1.0);
-        sum += c_h;
-        squares += c_h * c_h;
-        count += 1.0;
-    }
-    if (!(count > 0.0)) return {std::clamp(glm::dot(n, v), 0.0, 1.0), 0.0};
-    const double mean = sum / count;
-    return {mean, std::sqrt(std::max(squares / count - mean * mean, 0.0))};
-}
-
 // The light at `nm`: the light spectrum, or the sky seen in the mirror direction, and the lamp's
 // image (thinfilm.fx light_at).
 double light_at(const Film& f, const SpectralSetup& s, int light, int nm) {
