@@ -10,7 +10,10 @@
 #include "environment_spectral_lobes.glsl"
 
 // A rough film's lobe: Phong (r·l)^p about the mirror direction with p = (1/α² − 1)/2 for α =
-// Roughness² (a Blinn (n·h)^(4p), Walter's match of a GGX lobe of width α), at most 1e5.
+// Roughness² (a Blinn (n·h)^(4p), Walter's match of a GGX lobe of width α), at most 1e5 (Roughness
+// below 0.047: a lobe 0.2° wide), at least 1 (Roughness 0.76; UIMax 0.75: broader lobes, up to the
+// hemisphere about the mirror direction at 1, span more angles than four strata follow: furnace mean
+// CIEDE2000 1.0 there against 0.5 at 0.7).
 float film_lobe_power() {
     float alpha = max(Roughness * Roughness, 1e-3);
     return clamp((1.0 / (alpha * alpha) - 1.0) / 2.0, 1.0, 1e5);
@@ -36,6 +39,25 @@ vec2 film_rough_cosine(vec3 n, vec3 v, float power) {
     if (!(count > 0.0)) return vec2(clamp(dot(n, v), 0.0, 1.0), 0.0);
     float mean = sum / count;
     return vec2(mean, sqrt(max(squares / count - mean * mean, 0.0)));
+}
+
+// A disc light of angular `radius` is seen through the lobe at 16 points, each standing for a cell of
+// side a = radius·√(π/16): a lobe narrower than that would show them as dots, so the points see the
+// lobe widened to a standard deviation of at least 0.6 a (its power at most 1 / (0.6 a)², its mass to
+// match), where Gaussians a apart sum to within 2 exp(−2π² 0.36) = 0.2 % of flat.
+float film_disc_lobe_power(float power, float radius) {
+    float side = 0.6 * radius * sqrt(3.14159265358979323846 / float(kSpectralDiscPoints));
+    return min(power, 1.0 / max(side * side, 1e-12));
+}
+
+// Phong's (r·l)^p for unit r and l, from the chord: exp(p log(1 − d)), d = |r − l|²/2 = 1 − r·l. A
+// narrow lobe's value from the dot product errs ~1e-7·p in float (5e-4 at p = 5000), from the chord
+// ~1e-5.
+float phong_lobe_by_chord(vec3 r, vec3 l, float power) {
+    vec3 e = r - l;
+    float d = 0.5 * dot(e, e);
+    float log_cosine = d < 0.05 ? -d * (1.0 + d * (0.5 + d * (1.0 / 3.0 + d * 0.25))) : log(max(1.0 - d, 1e-30));
+    return d < 1.0 ? exp(power * log_cosine) : 0.0;  // nothing behind the mirror direction, at p = 0 too
 }
 
 // The four strata of the lobe (film_rough_strata); a stratum with nothing in it has share 0 and no light.
@@ -85,10 +107,11 @@ FilmStrata film_rough_strata(vec3 n, vec3 v, float power, vec2 seen, bool sky) {
         light_c2 += at * (luminance * c_h * c_h);
     }
     float total = count.x + count.y + count.z + count.w;
-    if (!(total > 0.0)) {  // no direction above the surface: the mirror direction's angle, one stratum
+    if (!(total > 0.0)) {  // no direction above the surface (a bump turned from the eye): as a smooth film, one stratum
         strata.cosine = vec4(seen.x, 0.0, 0.0, 0.0);
         strata.spread = vec4(0.0);
         strata.share = vec4(1.0, 0.0, 0.0, 0.0);
+        if (sky) strata.w0 = spectral_environment_weights(r);
         return strata;
     }
     strata.share = count / total;
@@ -101,20 +124,21 @@ FilmStrata film_rough_strata(vec3 n, vec3 v, float power, vec2 seen, bool sky) {
     light_c2 /= total;
     // The disc lights (the sun): 16 points of equal area over each, each point in its own stratum, over
     // the lobe's mass above the surface (the sky's directions are already a mean over it).
-    float mass = spectral_lobe_mass(dot(n, v), power).x;
-    if (sky && mass > 0.0) {
+    if (sky) {
         vec3 ne = FxSpectralEnvironmentRotation * n, ve = FxSpectralEnvironmentRotation * v, re = reflect(-ve, ne);
         const float golden = pi * (3.0 - sqrt(5.0));
         for (int k = 0; k < kSpectralDiscs; ++k) {
             vec4 place = texelFetch(FxSpectralDiscs, ivec2(2 * k, 0), 0), disc = texelFetch(FxSpectralDiscs, ivec2(2 * k + 1, 0), 0);
             if (!(disc.a > 0.0)) continue;
+            float seen_power = film_disc_lobe_power(power, place.w), mass = spectral_lobe_mass(dot(n, v), seen_power).x;
+            if (!(mass > 0.0)) continue;
             vec3 dx, dy;
             spectral_frame(place.xyz, dx, dy);
             for (int j = 0; j < kSpectralDiscPoints; ++j) {
                 float radius = sqrt((float(j) + 0.5) / float(kSpectralDiscPoints)) * place.w, angle = golden * float(j);
                 vec3 l = normalize(place.xyz + tan(radius) * (cos(angle) * dx + sin(angle) * dy));
                 if (dot(ne, l) <= 0.0) continue;
-                vec3 w = disc.rgb * (disc.a * pow(max(dot(re, l), 0.0), power) / float(kSpectralDiscPoints) / pi * FxSpectralEnvironmentIntensity / mass);
+                vec3 w = disc.rgb * (disc.a * phong_lobe_by_chord(re, l, seen_power) / float(kSpectralDiscPoints) / pi * FxSpectralEnvironmentIntensity / mass);
                 float c_h = clamp(dot(ve, normalize(ve + l)), 0.0, 1.0), luminance = w.x + w.y + w.z;
                 vec4 at = film_stratum_of(c_h, edges);
                 strata.w0 += at.x * w;

@@ -30,8 +30,8 @@ uniform float Thickness < string UIName = "Thickness"; float UIMin = 0; float UI
 uniform float Variation < string UIName = "Variation"; float UIMin = 0; float UIMax = 2000; float UIStep = 1; string UIUnits = "nm"; string UIGroup = "Film"; int UIOrder = 6;
                           string UIHelp = "Height of the inverted paraboloid, in texture coordinates, added to the base thickness"; > = 300.0;
 
-uniform float Roughness < string UIName = "Roughness"; float UIMin = 0; float UIMax = 1; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 7;
-                          string UIHelp = "A rough film (microfacet width α = Roughness²): it mirrors the environment and a sized light through a glossy lobe, split into four bands of viewing angle that each show the film at their own angle. 0: a smooth film. An approximation: under the sky about 0.1 CIEDE2000 from the exact integral on average at 0.2, 0.2 at 0.4, 0.35 at 0.7. Costs up to 8x a smooth film at 0.4"; > = 0.0;
+uniform float Roughness < string UIName = "Roughness"; float UIMin = 0; float UIMax = 0.75; float UIStep = 0.01; string UIGroup = "Film"; int UIOrder = 7;
+                          string UIHelp = "A rough film (microfacet width α = Roughness²): it mirrors the environment and a sized light through a glossy lobe, split into four bands of viewing angle that each show the film at their own angle. 0: a smooth film; 0.75: the broadest lobe drawn. Only with Incidence = view (the light's incidence has no lobe). An approximation: under the sky about 0.1 CIEDE2000 from the exact integral on average at 0.2, 0.2 at 0.4, 0.35 at 0.7. Costs about 8x a smooth Fourier film at 0.4, 20x at 0.7"; > = 0.0;
 
 uniform int Layers < string UIName = "Layers"; int UIMin = 1; int UIMax = 16; string UIGroup = "Stack"; int UIOrder = 1;
                      string UIHelp = "Films on the substrate, alternating A (n1, varying thickness) and B from the top"; > = 4;

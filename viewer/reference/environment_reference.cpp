@@ -141,7 +141,7 @@ std::vector<EnvironmentLookup::DiscPoint> EnvironmentLookup::spectral_disc_point
         for (int j = 0; j < 16; ++j) {
             const double r = std::sqrt((j + 0.5) / 16.0) * disc.angular_radius, angle = golden * j;
             const glm::dvec3 l = glm::normalize(disc.direction + std::tan(r) * (std::cos(angle) * dx + std::sin(angle) * dy));
-            points.push_back({to_world * l, disc.radiance * disc.solid_angle() / 16.0 / std::numbers::pi * intensity_});
+            points.push_back({to_world * l, disc.radiance * disc.solid_angle() / 16.0 / std::numbers::pi * intensity_, disc.angular_radius});
         }
     }
     return points;

@@ -50,6 +50,7 @@ public:
     glm::dvec3 spectral_filtered(const glm::dvec3& world, double share, double* seam = nullptr) const;
     struct DiscPoint {
         glm::dvec3 direction, weights;
+        double disc_radius;  // the angular radius of the disc it lies on
     };
     std::vector<DiscPoint> spectral_disc_points() const;
     glm::dvec2 spectral_lobe_mass(double nv, double power) const;

@@ -37,6 +37,12 @@ glm::dvec2 film_rough_cosine(const glm::dvec3& n, const glm::dvec3& v, double po
     return {mean, std::sqrt(std::max(squares / count - mean * mean, 0.0))};
 }
 
+// (r·l)^p, nothing behind r (also at p = 0, where pow(0, 0) would give 1).
+double phong_lobe(const glm::dvec3& r, const glm::dvec3& l, double power) {
+    const double c = glm::dot(r, l);
+    return c > 0.0 ? std::pow(c, power) : 0.0;
+}
+
 FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double power, const glm::dvec2& seen, const EnvironmentLookup* sky) {
     constexpr double kPi = std::numbers::pi;
     const glm::dvec3 edges = seen.x + seen.y * glm::dvec3(-0.674, 0.0, 0.674);
@@ -74,6 +80,7 @@ FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double po
         strata.cosine = {seen.x, 0.0, 0.0, 0.0};
         strata.share = {1.0, 0.0, 0.0, 0.0};
         strata.weights = {};
+        if (sky) strata.weights[0] = sky->spectral_weights(r, &strata.seam);  // as a smooth film (a bump turned from the eye)
         return strata;
     }
     for (size_t s = 0; s < 4; ++s) {
@@ -84,12 +91,15 @@ FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double po
         light_c2[s] /= total;
     }
     strata.seam = sky ? seam / total * sky->intensity() : 0.0;
-    // The disc lights' points, over the lobe's mass above the surface.
-    const double mass = sky ? sky->spectral_lobe_mass(glm::dot(n, v), power).x : 0.0;
-    if (sky && mass > 0.0) {
+    // The disc lights' points, over the lobe's mass above the surface; a lobe narrower than the points'
+    // cells widened (film_disc_lobe_power).
+    if (sky) {
         for (const EnvironmentLookup::DiscPoint& point : sky->spectral_disc_points()) {
             if (glm::dot(n, point.direction) <= 0.0) continue;
-            const glm::dvec3 w = point.weights * (std::pow(std::max(glm::dot(r, point.direction), 0.0), power) / mass);
+            const double side = 0.6 * point.disc_radius * std::sqrt(kPi / 16.0), seen_power = std::min(power, 1.0 / std::max(side * side, 1e-12));
+            const double mass = sky->spectral_lobe_mass(glm::dot(n, v), seen_power).x;
+            if (!(mass > 0.0)) continue;
+            const glm::dvec3 w = point.weights * (phong_lobe(r, point.direction, seen_power) / mass);
             const double c_h = std::clamp(glm::dot(v, glm::normalize(v + point.direction)), 0.0, 1.0);
             add(stratum_of(c_h), w, c_h);
         }

@@ -20,6 +20,9 @@ struct FilmStrata {
 // α = roughness², within [1, 1e5].
 double film_lobe_power(double roughness);
 
+// Phong's (r·l)^p, 0 behind r (at p = 0 too).
+double phong_lobe(const glm::dvec3& r, const glm::dvec3& l, double power);
+
 // The mean and standard deviation of v·h over 32 of the lobe's directions above the surface
 // (film_rough_cosine): where the strata's edges go.
 glm::dvec2 film_rough_cosine(const glm::dvec3& n, const glm::dvec3& v, double power);

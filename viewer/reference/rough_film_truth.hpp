@@ -20,4 +20,10 @@ namespace fxview::reference {
 std::vector<double> rough_film_radiance(const EnvironmentLookup& environment, const glm::dvec3& n, const glm::dvec3& v, double power,
                                         const std::function<double(double cos_h, int nm)>& reflectance, unsigned seed, int samples = 1024);
 
+// The same under a uniform sky (no environment; thinfilm.fx's light spectrum from every direction):
+// the mean over `samples` lobe-distributed directions above the surface of radiance(cos θ_h, λ), the
+// light spectrum times the film there.
+std::vector<double> rough_film_uniform(const glm::dvec3& n, const glm::dvec3& v, double power, const std::function<double(double cos_h, int nm)>& radiance,
+                                       unsigned seed, int samples = 1024);
+
 }  // namespace fxview::reference

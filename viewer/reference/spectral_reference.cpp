@@ -37,7 +37,7 @@ struct Surroundings {
     double seam = 0.0;  // how far GL's filtering leaves the weights open (cube corners, sub-texel precision)
     bool exact = false;  // the ground truth's: the model's spectra in double
     // The ground truth under an image: the integrals as spectra (360-830 nm), each direction's own uplift.
-    std::vector<double> diffuse_spectrum, highlight_spectrum;
+    std::vector<double> diffuse_spectrum{}, highlight_spectrum{};
     double at(const glm::dvec3& weights, int nm) const {
         return exact ? environment.exact_spectral_radiance(weights, nm) : environment.spectral_radiance(weights, nm);
     }
@@ -58,7 +58,7 @@ glm::dvec3 about(const glm::dvec3& axis, double cosine, double u) {
 std::optional<Surroundings> surroundings(const ShadingInput& in, const ReferenceContext& c, int lobe, const unsigned* truth_seed = nullptr) {
     std::optional<EnvironmentLookup> environment = EnvironmentLookup::from(c);
     if (!environment || !environment->spectral()) return std::nullopt;
-    Surroundings s{*environment};
+    Surroundings s{.environment = *environment};
     const glm::dvec3 n = glm::normalize(in.normal), v = glm::normalize(in.camera - in.position), r = 2.0 * glm::dot(n, v) * n - v;
     const double power = c.number("Power");
     if (!truth_seed) {

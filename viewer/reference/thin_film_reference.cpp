@@ -125,7 +125,7 @@ optics::Stack stack_at(const Film& f, double nm) {
 
 // The height field of BumpFresnelExact, h = A sin(2πfu) sin(2πfv): the film under the normal tilted
 // by -∇h in the tangent frame (T, B = N x T, N), thickened by WaveThickness · h.
-Film bumped_film(const ShadingInput& in, const ReferenceContext& c) {
+ShadingInput bumped_input(const ShadingInput& in, const ReferenceContext& c) {
     const double amplitude = c.number("WaveAmplitude"), w = 2.0 * std::numbers::pi * c.number("WaveFrequency");
     const glm::dvec3 n = glm::normalize(in.normal);
     const glm::dvec3 t = glm::normalize(in.tangent - n * glm::dot(n, in.tangent));
@@ -134,7 +134,13 @@ Film bumped_film(const ShadingInput& in, const ReferenceContext& c) {
     const glm::dvec2 slope = amplitude * w * glm::dvec2(std::cos(phase.x) * std::sin(phase.y), std::sin(phase.x) * std::cos(phase.y));
     ShadingInput tilted = in;
     tilted.normal = -slope.x * t - slope.y * b + n;
-    Film f = film(tilted, c);
+    return tilted;
+}
+
+Film bumped_film(const ShadingInput& in, const ReferenceContext& c) {
+    const double amplitude = c.number("WaveAmplitude");
+    const glm::dvec2 phase = 2.0 * std::numbers::pi * c.number("WaveFrequency") * in.uv;
+    Film f = film(bumped_input(in, c), c);
     f.thickness = std::max(f.thickness + c.number("WaveThickness") * amplitude * std::sin(phase.x) * std::sin(phase.y), 0.0);
     return f;
 }
@@ -389,12 +395,16 @@ double spread_reflectance(const Film& f, double spread, int nm, const StackAt& s
 
 // `spread_thickness`: the technique reads ThicknessSpread (the Fourier films): the truth averages the
 // film over it, under the environment and under the light spectrum alike.
-Reference with_sky_truth(Reference r, StackAt stack_at_nm, bool spread_thickness = false) {
-    r.truth = [shade = r.shade, stack_at_nm, spread_thickness](const ShadingInput& in, const ReferenceContext& c, unsigned seed) {
-        const Film f = film(in, c);
+// `film_at` / `surface`: the film at a pixel and the surface it lies on (BumpFresnelExact: tilted).
+using SurfaceAt = std::function<ShadingInput(const ShadingInput&, const ReferenceContext&)>;
+Reference with_sky_truth(Reference r, StackAt stack_at_nm, bool spread_thickness = false, FilmAt film_at = film,
+                         SurfaceAt surface = [](const ShadingInput& in, const ReferenceContext&) { return in; }) {
+    r.truth = [shade = r.shade, stack_at_nm, spread_thickness, film_at, surface](const ShadingInput& in, const ReferenceContext& c, unsigned seed) {
+        const Film f = film_at(in, c);
         const double spread = spread_thickness ? c.number("ThicknessSpread") : 0.0;
-        if (!f.sky && !(spread > 0.0)) return shade(in, c);  // lit by the light spectrum: nothing the reference approximates
-        const glm::dvec3 n = glm::normalize(in.normal), v = glm::normalize(in.camera - in.position);
+        if (!f.sky && !f.strata && !(spread > 0.0)) return shade(in, c);  // smooth, lit by the light spectrum: nothing the reference approximates
+        const ShadingInput at = surface(in, c);
+        const glm::dvec3 n = glm::normalize(at.normal), v = glm::normalize(in.camera - in.position);
         const glm::dvec3 weights = f.sky ? f.environment->exact_spectral_weights(2.0 * glm::dot(n, v) * n - v) : glm::dvec3(0.0);
         const SpectralSetup setup = spectral_setup(c), every_nm = every_nm_setup(c);
         const int light = static_cast<int>(c.number("LightSpectrum"));
@@ -403,9 +413,14 @@ Reference with_sky_truth(Reference r, StackAt stack_at_nm, bool spread_thickness
             g.cos0 = cos0;
             return spread > 0.0 ? spread_reflectance(g, spread, nm, stack_at_nm) : optics::transfer_matrix_reflectance(stack_at_nm(g, nm), nm, cos0);
         };
-        if (f.sky && f.roughness > 0.0) {
-            // A rough film: the lobe's integral with the film at each direction's half vector, and the lamp's image.
-            const std::vector<double> rough = rough_film_radiance(*f.environment, n, v, film_lobe_power(f.roughness), film_at_angle, seed);
+        if (f.strata) {
+            // A rough film: the lobe's integral with the film at each direction's half vector (under the
+            // environment, or a uniform sky of the light spectrum), and the lamp's image.
+            const double power = film_lobe_power(f.roughness);
+            const std::vector<double> rough = f.sky ? rough_film_radiance(*f.environment, n, v, power, film_at_angle, seed)
+                                                    : rough_film_uniform(n, v, power, [&](double cos_h, int nm) {
+                                                          return spectral::packed_value(*setup.spectra, light, nm) * film_at_angle(cos_h, nm);
+                                                      }, seed);
             return to_rgba(integrate(every_nm, true, [&](int nm) {
                 return rough[static_cast<size_t>(nm - lighting::SpectralForm::kFirstNm)] +
                        f.lamp * spectral::packed_value(*setup.spectra, light, nm) * film_at_angle(f.cos0, nm);
@@ -418,7 +433,12 @@ Reference with_sky_truth(Reference r, StackAt stack_at_nm, bool spread_thickness
                                             : optics::transfer_matrix_reflectance(stack_at_nm(f, nm), nm, f.cos0));
         }), every_nm.mapping);
     };
-    if (spread_thickness) r.truth_wanted = [](const ReferenceContext& c) { return c.number("ThicknessSpread") > 0.0; };
+    // Without an environment a rough film (a uniform sky through its lobe) or a spread of thicknesses
+    // still has an approximation to measure.
+    r.truth_wanted = [spread_thickness](const ReferenceContext& c) {
+        const bool rough = c.values.numbers.count("Roughness") && c.number("Roughness") > 0.0 && c.number("Incidence") == 0.0;
+        return rough || (spread_thickness && c.number("ThicknessSpread") > 0.0);
+    };
     r.truth_method = spread_thickness ? "the exact film mirroring the environment's model or lit by the light spectrum, averaged over its spread of "
                                         "thicknesses (an image: each direction's own uplifted spectrum; 1 nm, characteristic matrices, Simpson over ±6σ; "
                                         "rough: over its lobe, 1024 directions, the film at each half vector)"
@@ -489,7 +509,7 @@ std::map<std::string, Reference> thin_film_references() {
         }
         return slack + phase(in, c);
     };
-    all.emplace("BumpFresnelExact", std::move(bump));
+    all.emplace("BumpFresnelExact", with_sky_truth(std::move(bump), single_film_stack, false, bumped_film, bumped_input));
     all.emplace("Bubble", with_sky_truth(make(by_matrices([](const Film& f) { return free_film_stack(f, 0); }), 1e-4, kFinesseWhy), free_film_stack));
     // With dispersion the indices, and so the angles, change with the wavelength: one stack per nm.
     const Reflectance fixed_stack = by_matrices([](const Film& f) { return f.stack; });
