@@ -8,6 +8,7 @@
 // (docs/thin-films.md). CPU twin: viewer/reference/film_strata.cpp.
 #pragma once
 #include "environment_spectral_lobes.glsl"
+#include "area_light.glsl"
 
 // A rough film's lobe: Phong (r·l)^p about the mirror direction with p = (1/α² − 1)/2 for α =
 // Roughness² (a Blinn (n·h)^(4p), Walter's match of a GGX lobe of width α), at most 1e5 (Roughness
@@ -66,6 +67,7 @@ struct FilmStrata {
     vec4 spread;         // v·h's standard deviation within each
     vec4 share;          // the stratum's part of the lobe's directions above the surface (a uniform sky, a lamp)
     vec3 w0, w1, w2, w3; // the environment's weights per stratum: together its mean under the lobe above the surface
+    vec4 lamp;           // the scene's sized light per stratum, in the uniform sky's units (as film_lamp)
 };
 
 // The strata a direction with v·h = c_h falls in, one-hot, at the edges μ + σ (−0.674, 0, 0.674) of
@@ -79,13 +81,17 @@ vec4 film_stratum_of(float c_h, vec3 edges) {
 // standard deviation of v·h, film_rough_cosine). `sky`: under the spectral environment (its weights by
 // the filtered gather of spectral_environment_highlight, the disc lights by 16 points each); otherwise a
 // uniform light, each direction weighing alike.
-FilmStrata film_rough_strata(vec3 n, vec3 v, float power, vec2 seen, bool sky) {
+// `position`: where the film is, for the scene's sized light (area_light.glsl), seen through the lobe
+// at its own points; `mirror_lamp`: its image in the mirror direction, for a lobe with no direction
+// above the surface.
+FilmStrata film_rough_strata(vec3 n, vec3 v, float power, vec2 seen, bool sky, vec3 position, float mirror_lamp) {
     const float pi = 3.14159265358979323846;
     vec3 edges = seen.x + seen.y * vec3(-0.674, 0.0, 0.674);
     vec3 r = reflect(-v, n), x, y;
     spectral_frame(r, x, y);
     FilmStrata strata;
     strata.w0 = strata.w1 = strata.w2 = strata.w3 = vec3(0.0);
+    strata.lamp = vec4(0.0);
     vec4 count = vec4(0.0), light = vec4(0.0), light_c = vec4(0.0), light_c2 = vec4(0.0);
     int samples = spectral_lobe_samples(power);
     for (int i = 0; i < samples; ++i) {
@@ -112,6 +118,7 @@ FilmStrata film_rough_strata(vec3 n, vec3 v, float power, vec2 seen, bool sky) {
         strata.spread = vec4(0.0);
         strata.share = vec4(1.0, 0.0, 0.0, 0.0);
         if (sky) strata.w0 = spectral_environment_weights(r);
+        strata.lamp.x = mirror_lamp;
         return strata;
     }
     strata.share = count / total;
@@ -150,6 +157,44 @@ FilmStrata film_rough_strata(vec3 n, vec3 v, float power, vec2 seen, bool sky) {
                 light_c2 += at * (luminance * c_h * c_h);
             }
         }
+    }
+    // The scene's sized light the same way: 16 points over a sphere's cone (a sunflower spiral), the
+    // flat lights' 34 of area_light.glsl, each bringing π L ΔΩ (r·l)^p / mass (its light in the uniform
+    // sky's units). The mass: 2π/(p+1) times the part of the lobe's directions above the surface.
+    if (flat_light() || LightRadius > 0.0) {
+        bool flat_lamp = flat_light();
+        vec3 to_centre = LightPosition - position;
+        float distance = max(length(to_centre), 1e-12);
+        vec3 c = to_centre / distance, cx, cy;
+        spectral_frame(c, cx, cy);
+        float beta = asin(clamp(LightRadius / distance, 0.0, 1.0));
+        float solid = flat_lamp ? min(flat_light_area() * max(-dot(c, LightFrame[2]), 0.0) / (distance * distance), 6.2831853) : 2.0 * pi * (1.0 - cos(beta));
+        int points = flat_lamp ? 34 : 16;
+        float seen_power = min(power, 1.0 / max(0.36 * solid / float(points), 1e-12));  // as film_disc_lobe_power
+        float mass = 2.0 * pi / (seen_power + 1.0) * total / float(samples);
+        const float golden = pi * (3.0 - sqrt(5.0));
+        int j = 0;
+        do {
+            vec3 l;
+            float amount;  // L ΔΩ of the point
+            if (flat_lamp) {
+                vec3 d = flat_light_point(j, ivec2(34, 21)) - position;
+                float r2 = max(dot(d, d), 1e-24);
+                l = d * inversesqrt(r2);
+                amount = LightRadiance * flat_light_area() * max(-dot(l, LightFrame[2]), 0.0) / r2 / 34.0;
+            } else {
+                float radius = sqrt((float(j) + 0.5) / 16.0) * beta, angle = golden * float(j);
+                l = normalize(c + tan(radius) * (cos(angle) * cx + sin(angle) * cy));
+                amount = 2.0 / (1.0 + cos(beta)) / 16.0;  // a sphere of unit irradiance: L = 1 / (π sin²β)
+            }
+            if (dot(n, l) <= 0.0) continue;
+            float w = pi * amount * phong_lobe_by_chord(r, l, seen_power) / mass, c_h = clamp(dot(v, normalize(v + l)), 0.0, 1.0);
+            vec4 at = film_stratum_of(c_h, edges);
+            strata.lamp += at * w;
+            light += at * w;
+            light_c += at * (w * c_h);
+            light_c2 += at * (w * c_h * c_h);
+        } while (++j < points);
     }
     // Each stratum's angle weighted by its light (one without light keeps the middle of its edges: its
     // angle does not matter then but for a lamp's image).

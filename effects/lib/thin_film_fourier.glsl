@@ -93,8 +93,8 @@ float light_tail_bound(sampler2D table, SeriesLight light, float path) {
 }
 
 // The exact sum at every nm of the table's range, with its normalisation (1 / Σ ȳ): where no series
-// exists. `weights` and `share`: the stratum's light (light_at's film_sky_weights and film_share).
-vec3 exact_film_xyz(Film f, vec2 n2, vec3 weights, float share) {
+// exists. `weights`, `share` and `lamp`: the stratum's light (light_at's film_sky_weights, film_share, film_stratum_lamp).
+vec3 exact_film_xyz(Film f, vec2 n2, vec3 weights, float share, float lamp) {
     vec2 n1 = vec2(FilmIndex, 0.0);
     vec2 cos1 = refracted_cos_c(OuterIndex, n1, f.cos0), cos2 = refracted_cos_c(OuterIndex, n2, f.cos0);
     Amplitude r01 = fresnel_c(vec2(OuterIndex, 0.0), vec2(f.cos0, 0.0), n1, cos1);
@@ -108,7 +108,7 @@ vec3 exact_film_xyz(Film f, vec2 n2, vec3 weights, float share) {
         vec2 p = hirayama_step(r01.p, r12.p, path / float(nm));
         vec3 cmf = texelFetch(CmfFloat, ivec2(nm - 360, Observer), 0).rgb;
         float spectrum = spectrum_at(LightSpectrum, nm);
-        float light = (film_under_sky ? spectral_environment_radiance(weights, nm) : share * spectrum) + film_lamp * share * spectrum;
+        float light = (film_under_sky ? spectral_environment_radiance(weights, nm) : share * spectrum) + lamp * spectrum;
         xyz += light * (weight.x * dot(s, s) + weight.y * dot(p, p)) * cmf;
         ybar_sum += cmf.y;
     }
@@ -193,12 +193,12 @@ vec4 fourier_film_colour(Film pixel, vec2 n2) {
         if (film_stratum_empty(stratum)) continue;
         Film f = film_stratum_angle(pixel, stratum);
         vec3 weights = rough ? film_stratum_weights(stratum) : film_sky_weights, xyz;
-        float share = rough ? film_strata.share[stratum] : 1.0;
+        float share = rough ? film_strata.share[stratum] : 1.0, lamp = rough ? film_strata.lamp[stratum] : film_lamp;
         // The sky's three tables (observer · 3 + k); a lamp mirrored besides it (another spectrum): the
         // exact sum. Without the sky the lamp's image has the light's own spectrum and scales the series.
-        bool series = film_under_sky ? film_lamp <= 0.0 && fourier_film_xyz(f, n2, FilmSkyFourier, SeriesLight(kFourierRowsPerTable * 3 * Observer, 3, weights), xyz)
-                                     : fourier_film_xyz(f, n2, FilmFourier, SeriesLight(row, 1, vec3(share * (1.0 + film_lamp), 0.0, 0.0)), xyz);
-        sum += series ? xyz : exact_film_xyz(f, n2, weights, share);
+        bool series = film_under_sky ? lamp <= 0.0 && fourier_film_xyz(f, n2, FilmSkyFourier, SeriesLight(kFourierRowsPerTable * 3 * Observer, 3, weights), xyz)
+                                     : fourier_film_xyz(f, n2, FilmFourier, SeriesLight(row, 1, vec3(share + lamp, 0.0, 0.0)), xyz);
+        sum += series ? xyz : exact_film_xyz(f, n2, weights, share, lamp);
     } while (++stratum < film_strata_count);
     return vec4(xyz_to_srgb(sum * Brightness), 1.0);
 }

@@ -35,10 +35,13 @@ vec3 mirror_of_eye(vec3 position, vec3 normal) { return reflect(-normalize(Camer
 FilmStrata film_strata;
 int film_strata_count = 1;
 float film_share = 1.0;
+float film_stratum_lamp = 0.0;  // the sized light's part in the stratum (a smooth film: film_lamp)
 
 vec3 film_stratum_weights(int s) { return s == 0 ? film_strata.w0 : s == 1 ? film_strata.w1 : s == 2 ? film_strata.w2 : film_strata.w3; }
 
-bool film_stratum_empty(int s) { return film_strata_count > 1 && film_strata.share[s] == 0.0 && film_stratum_weights(s) == vec3(0.0); }
+bool film_stratum_empty(int s) {
+    return film_strata_count > 1 && film_strata.share[s] == 0.0 && film_stratum_weights(s) == vec3(0.0) && film_strata.lamp[s] == 0.0;
+}
 
 // Stratum s of the pixel's film `f`: its angle (the pixel's own for a smooth film).
 Film film_stratum_angle(Film f, int s) {
@@ -52,6 +55,7 @@ Film film_stratum_angle(Film f, int s) {
 // The same, and its light for light_at() (film_sky_weights, film_share).
 Film film_stratum(Film f, int s) {
     film_share = film_strata_count > 1 ? film_strata.share[s] : 1.0;
+    film_stratum_lamp = film_strata_count > 1 ? film_strata.lamp[s] : film_lamp;
     if (film_strata_count > 1) film_sky_weights = film_stratum_weights(s);
     return film_stratum_angle(f, s);
 }
@@ -74,10 +78,11 @@ Film film_at(vec3 position, vec3 normal, vec2 uv, float blur) {
     bool rough = Incidence == 0 && Roughness > 0.0;
     if (film_under_sky && !rough) film_sky_weights = spectral_environment_weights(mirror);
     film_strata_count = rough ? 4 : 1;
-    if (rough) film_strata = film_rough_strata(n, v, power, seen, film_under_sky);
-    // A rough film spreads a lamp's image over the lobe's width, 2 / √p (the ramp keeps its energy).
-    if (rough) blur += 2.0 / sqrt(power);
     film_lamp = Incidence == 0 ? 3.14159265358979323846 * scene_light_radiance(position, mirror, blur) : 0.0;
+    // A rough film sees a sized light through its lobe, point by point, in the strata.
+    if (rough) film_strata = film_rough_strata(n, v, power, seen, film_under_sky, position, film_lamp);
+    if (rough) film_lamp = dot(film_strata.lamp, vec4(1.0));
+    film_stratum_lamp = film_lamp;
     film_footprint = vec4(blur, 0.0, 0.0, 0.0);
     return f;
 }
@@ -85,7 +90,7 @@ Film film_at(vec3 position, vec3 normal, vec2 uv, float blur) {
 // The light at `nm`: the light spectrum, or the sky seen in the mirror direction; and the lamp's image.
 float light_at(int nm) {
     float spectrum = spectrum_at(LightSpectrum, nm);
-    return (film_under_sky ? spectral_environment_radiance(film_sky_weights, nm) : film_share * spectrum) + film_lamp * film_share * spectrum;
+    return (film_under_sky ? spectral_environment_radiance(film_sky_weights, nm) : film_share * spectrum) + film_stratum_lamp * spectrum;
 }
 
 // One wavelength's reflected light, weighted by the CMFs; ybar_sum collects k's denominator.

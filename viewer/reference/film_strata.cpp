@@ -6,6 +6,7 @@
 
 #include "lighting/image_based_lighting.hpp"
 #include "reference/tangent_frame.hpp"
+#include "scene/light_geometry.hpp"
 
 namespace fxview::reference {
 
@@ -43,7 +44,8 @@ double phong_lobe(const glm::dvec3& r, const glm::dvec3& l, double power) {
     return c > 0.0 ? std::pow(c, power) : 0.0;
 }
 
-FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double power, const glm::dvec2& seen, const EnvironmentLookup* sky) {
+FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double power, const glm::dvec2& seen, const EnvironmentLookup* sky,
+                             const ShadingInput& in, double mirror_lamp) {
     constexpr double kPi = std::numbers::pi;
     const glm::dvec3 edges = seen.x + seen.y * glm::dvec3(-0.674, 0.0, 0.674);
     const auto stratum_of = [&](double c_h) { return static_cast<size_t>(int(c_h > edges.x) + int(c_h > edges.y) + int(c_h > edges.z)); };
@@ -81,6 +83,7 @@ FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double po
         strata.share = {1.0, 0.0, 0.0, 0.0};
         strata.weights = {};
         if (sky) strata.weights[0] = sky->spectral_weights(r, &strata.seam);  // as a smooth film (a bump turned from the eye)
+        strata.lamp[0] = mirror_lamp;
         return strata;
     }
     for (size_t s = 0; s < 4; ++s) {
@@ -102,6 +105,44 @@ FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double po
             const glm::dvec3 w = point.weights * (phong_lobe(r, point.direction, seen_power) / mass);
             const double c_h = std::clamp(glm::dot(v, glm::normalize(v + point.direction)), 0.0, 1.0);
             add(stratum_of(c_h), w, c_h);
+        }
+    }
+    // The scene's sized light through the lobe at its points, each π L ΔΩ (r·l)^p / mass; the mass
+    // 2π/(p+1) times the part of the lobe's directions above the surface.
+    const bool flat_lamp = in.lamp.is_flat();
+    if (flat_lamp || in.light_radius > 0.0) {
+        const glm::dvec3 to_centre = in.light - in.position;
+        const double distance = std::max(glm::length(to_centre), 1e-12);
+        const glm::dvec3 c = to_centre / distance;
+        glm::dvec3 cx, cy;
+        duff_frame(c, cx, cy);
+        const double beta = std::asin(std::clamp(in.light_radius / distance, 0.0, 1.0));
+        const double solid = flat_lamp ? std::min(in.lamp.area() * std::max(-glm::dot(c, in.lamp.normal), 0.0) / (distance * distance), 2.0 * kPi)
+                                       : 2.0 * kPi * (1.0 - std::cos(beta));
+        const int points = flat_lamp ? 34 : 16;
+        const double seen_power = std::min(power, 1.0 / std::max(0.36 * solid / points, 1e-12));
+        const double mass = 2.0 * kPi / (seen_power + 1.0) * total / samples;
+        const double golden = kPi * (3.0 - std::sqrt(5.0));
+        for (int j = 0; j < points; ++j) {
+            glm::dvec3 l;
+            double amount;  // L ΔΩ of the point
+            if (flat_lamp) {
+                const glm::dvec3 d = scene::flat_light_point(in.lamp, j, 34) - in.position;
+                const double r2 = std::max(glm::dot(d, d), 1e-24);
+                l = d / std::sqrt(r2);
+                amount = in.lamp.radiance * in.lamp.area() * std::max(-glm::dot(l, in.lamp.normal), 0.0) / r2 / 34.0;
+            } else {
+                const double radius = std::sqrt((j + 0.5) / 16.0) * beta, angle = golden * j;
+                l = glm::normalize(c + std::tan(radius) * (std::cos(angle) * cx + std::sin(angle) * cy));
+                amount = 2.0 / (1.0 + std::cos(beta)) / 16.0;  // a sphere of unit irradiance: L = 1 / (π sin²β)
+            }
+            if (glm::dot(n, l) <= 0.0) continue;
+            const double w = kPi * amount * phong_lobe(r, l, seen_power) / mass, c_h = std::clamp(glm::dot(v, glm::normalize(v + l)), 0.0, 1.0);
+            const size_t s = stratum_of(c_h);
+            strata.lamp[s] += w;
+            light[s] += w;
+            light_c[s] += w * c_h;
+            light_c2[s] += w * c_h * c_h;
         }
     }
     // Each stratum's angle weighted by its light; one without light keeps the middle of its edges.

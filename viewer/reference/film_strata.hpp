@@ -6,14 +6,16 @@
 #include <glm/glm.hpp>
 
 #include "reference/environment_reference.hpp"
+#include "reference/reference.hpp"
 
 namespace fxview::reference {
 
 struct FilmStrata {
     std::array<double, 4> cosine{}, spread{}, share{};  // mean v·h (light-weighted), its deviation, part of the directions
     std::array<glm::dvec3, 4> weights{};               // the environment's weights per stratum (sum: the lobe's mean)
+    std::array<double, 4> lamp{};                      // the scene's sized light per stratum, in the uniform sky's units
     double seam = 0;                                   // how far GL's filtering leaves the weights open
-    bool empty(size_t s) const { return share[s] == 0.0 && weights[s] == glm::dvec3(0.0); }
+    bool empty(size_t s) const { return share[s] == 0.0 && weights[s] == glm::dvec3(0.0) && lamp[s] == 0.0; }
 };
 
 // A rough film's lobe (film_roughness.glsl film_lobe_power): Phong of p = (1/α² − 1)/2 for
@@ -30,6 +32,10 @@ glm::dvec2 film_rough_cosine(const glm::dvec3& n, const glm::dvec3& v, double po
 // The Phong lobe of `power` about the mirror direction of v, split at μ + σ (−0.674, 0, 0.674) of
 // `seen` = (μ, σ) of v·h. `sky`: the spectral environment seen through it (filtered gather, disc
 // lights by their points); null: a uniform light, every direction alike.
-FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double power, const glm::dvec2& seen, const EnvironmentLookup* sky);
+// `in`: the pixel, for the scene's sized light seen through the lobe at its own points (16 over a
+// sphere, a flat light's 34); `mirror_lamp`: its image in the mirror direction, for a lobe with no
+// direction above the surface.
+FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double power, const glm::dvec2& seen, const EnvironmentLookup* sky,
+                             const ShadingInput& in, double mirror_lamp);
 
 }  // namespace fxview::reference

@@ -62,6 +62,7 @@ std::vector<Film> film_strata(const Film& f) {
         g.cos0 = f.strata->cosine[s];
         g.cos0_spread = f.strata->spread[s];
         g.share = f.strata->share[s];
+        g.lamp = f.strata->lamp[s];
         if (g.sky) g.sky = f.strata->weights[s];
         strata.push_back(g);
     }
@@ -72,7 +73,7 @@ std::vector<Film> film_strata(const Film& f) {
 // image (thinfilm.fx light_at).
 double light_at(const Film& f, const SpectralSetup& s, int light, int nm) {
     const double spectrum = spectral::packed_value(*s.spectra, light, nm);
-    return (f.sky ? f.environment->spectral_radiance(*f.sky, nm) : f.share * spectrum) + f.lamp * f.share * spectrum;
+    return (f.sky ? f.environment->spectral_radiance(*f.sky, nm) : f.share * spectrum) + f.lamp * spectrum;
 }
 
 Film film(const ShadingInput& in, const ReferenceContext& c) {
@@ -92,15 +93,16 @@ Film film(const ShadingInput& in, const ReferenceContext& c) {
     f.cos0_spread = view ? seen.y : 0.0;
     f.environment = EnvironmentLookup::from(c);
     const bool under_sky = view && f.environment && f.environment->spectral() && c.environment->intensity > 0;
+    // The GPU's blur of the lamp's image (how far the mirror direction turns across the pixel), as captured.
+    if (view) f.lamp = std::numbers::pi * scene_light_radiance(in, mirror, in.footprint.x);
     if (view && f.roughness > 0) {
-        f.strata = film_rough_strata(n, v, film_lobe_power(f.roughness), seen, under_sky ? &*f.environment : nullptr);
+        f.strata = film_rough_strata(n, v, film_lobe_power(f.roughness), seen, under_sky ? &*f.environment : nullptr, in, f.lamp);
+        f.lamp = f.strata->lamp[0] + f.strata->lamp[1] + f.strata->lamp[2] + f.strata->lamp[3];
         f.sky_seam = f.strata->seam;
         if (under_sky) f.sky = f.strata->weights[0] + f.strata->weights[1] + f.strata->weights[2] + f.strata->weights[3];
     } else if (under_sky) {
         f.sky = f.environment->spectral_weights(mirror);
     }
-    // The GPU's blur of the image (how far the mirror direction turns across the pixel), as captured.
-    if (c.number("Incidence") == 0.0) f.lamp = std::numbers::pi * scene_light_radiance(in, mirror, in.footprint.x);
     // An inverted paraboloid over the texture square, peaking at its centre (fig. 27).
     const glm::dvec2 centred = 2.0 * in.uv - 1.0;
     f.thickness = c.number("Thickness") + c.number("Variation") * std::max(1.0 - glm::dot(centred, centred), 0.0);
@@ -322,7 +324,7 @@ spectral::Vec3 fourier_xyz(const Film& f, const ReferenceContext& c, optics::Com
                                             : film_xyz_fourier_table(*f.environment->spectral_fourier(), setup.observer,
                                                                      TableLight{0, 3, {f.sky->x, f.sky->y, f.sky->z}}, film, technique))
                               : film_xyz_fourier_table(c.generated("FilmFourier"), setup.observer,
-                                                       TableLight{light, 1, {f.share * (1.0 + f.lamp), 0.0, 0.0}}, film, technique);
+                                                       TableLight{light, 1, {f.share + f.lamp, 0.0, 0.0}}, film, technique);
     if (series) {
         spectral::Vec3 xyz = *series;
         for (double& v : xyz) v *= setup.brightness;
