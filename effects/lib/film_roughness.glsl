@@ -70,11 +70,13 @@ struct FilmStrata {
     vec4 lamp;           // the scene's sized light per stratum, in the uniform sky's units (as film_lamp)
 };
 
-// The strata a direction with v·h = c_h falls in, one-hot, at the edges μ + σ (−0.674, 0, 0.674) of
-// the lobe's v·h (the quartiles of a normal distribution).
-vec4 film_stratum_of(float c_h, vec3 edges) {
-    int k = int(c_h > edges.x) + int(c_h > edges.y) + int(c_h > edges.z);
-    return vec4(equal(ivec4(k), ivec4(0, 1, 2, 3)));
+// The strata a direction with v·h = c_h falls in, at the edges μ + σ (−0.674, 0, 0.674) of the lobe's
+// v·h (the quartiles of a normal distribution): its shares of the four, split linearly across `soft`
+// about each edge (0.1 σ) so that the strata change smoothly with the view. (One-hot, a bright lamp's
+// point on an edge moved all its light between two angles on a float rounding of v·h.)
+vec4 film_stratum_of(float c_h, vec3 edges, float soft) {
+    vec3 above = clamp((c_h - edges) / soft + 0.5, 0.0, 1.0);
+    return vec4(1.0 - above.x, above.x - above.y, above.y - above.z, above.z);
 }
 
 // Splits the lobe of `power` about the mirror direction of v into strata by v·h, given `seen` (mean and
@@ -87,6 +89,7 @@ vec4 film_stratum_of(float c_h, vec3 edges) {
 FilmStrata film_rough_strata(vec3 n, vec3 v, float power, vec2 seen, bool sky, vec3 position, float mirror_lamp) {
     const float pi = 3.14159265358979323846;
     vec3 edges = seen.x + seen.y * vec3(-0.674, 0.0, 0.674);
+    float soft = max(0.1 * seen.y, 1e-6);
     vec3 r = reflect(-v, n), x, y;
     spectral_frame(r, x, y);
     FilmStrata strata;
@@ -102,7 +105,7 @@ FilmStrata film_rough_strata(vec3 n, vec3 v, float power, vec2 seen, bool sky, v
         if (dot(n, l) <= 0.0 || !(density > 0.0)) continue;
         vec3 w = sky ? spectral_environment_filtered(l, 1.0 / (float(samples) * density)) : vec3(1.0);
         float c_h = clamp(dot(v, normalize(v + l)), 0.0, 1.0), luminance = w.x + w.y + w.z;  // the spectra have luminance 1
-        vec4 at = film_stratum_of(c_h, edges);
+        vec4 at = film_stratum_of(c_h, edges, soft);
         strata.w0 += at.x * w;
         strata.w1 += at.y * w;
         strata.w2 += at.z * w;
@@ -147,7 +150,7 @@ FilmStrata film_rough_strata(vec3 n, vec3 v, float power, vec2 seen, bool sky, v
                 if (dot(ne, l) <= 0.0) continue;
                 vec3 w = disc.rgb * (disc.a * phong_lobe_by_chord(re, l, seen_power) / float(kSpectralDiscPoints) / pi * FxSpectralEnvironmentIntensity / mass);
                 float c_h = clamp(dot(ve, normalize(ve + l)), 0.0, 1.0), luminance = w.x + w.y + w.z;
-                vec4 at = film_stratum_of(c_h, edges);
+                vec4 at = film_stratum_of(c_h, edges, soft);
                 strata.w0 += at.x * w;
                 strata.w1 += at.y * w;
                 strata.w2 += at.z * w;
@@ -167,8 +170,10 @@ FilmStrata film_rough_strata(vec3 n, vec3 v, float power, vec2 seen, bool sky, v
         float distance = max(length(to_centre), 1e-12);
         vec3 c = to_centre / distance, cx, cy;
         spectral_frame(c, cx, cy);
-        float beta = asin(clamp(LightRadius / distance, 0.0, 1.0));
-        float solid = flat_lamp ? min(flat_light_area() * max(-dot(c, LightFrame[2]), 0.0) / (distance * distance), 6.2831853) : 2.0 * pi * (1.0 - cos(beta));
+        // The sphere's cone by its sine and cosine (llvmpipe's asin errs 4e-4 rad).
+        float sine = clamp(LightRadius / distance, 0.0, 1.0), cosine = sqrt(1.0 - sine * sine), tangent = sine / max(cosine, 1e-6);
+        float solid = flat_lamp ? min(flat_light_area() * max(-dot(c, LightFrame[2]), 0.0) / (distance * distance), 6.2831853)
+                                : 2.0 * pi * sine * sine / (1.0 + cosine);
         int points = flat_lamp ? 34 : 16;
         float seen_power = min(power, 1.0 / max(0.36 * solid / float(points), 1e-12));  // as film_disc_lobe_power
         float mass = 2.0 * pi / (seen_power + 1.0) * total / float(samples);
@@ -183,13 +188,13 @@ FilmStrata film_rough_strata(vec3 n, vec3 v, float power, vec2 seen, bool sky, v
                 l = d * inversesqrt(r2);
                 amount = LightRadiance * flat_light_area() * max(-dot(l, LightFrame[2]), 0.0) / r2 / 34.0;
             } else {
-                float radius = sqrt((float(j) + 0.5) / 16.0) * beta, angle = golden * float(j);
-                l = normalize(c + tan(radius) * (cos(angle) * cx + sin(angle) * cy));
-                amount = 2.0 / (1.0 + cos(beta)) / 16.0;  // a sphere of unit irradiance: L = 1 / (π sin²β)
+                float radius = sqrt((float(j) + 0.5) / 16.0) * tangent, angle = golden * float(j);  // equal areas of the tangent plane
+                l = normalize(c + radius * (cos(angle) * cx + sin(angle) * cy));
+                amount = 2.0 / (1.0 + cosine) / 16.0;  // a sphere of unit irradiance: L = 1 / (π sin²β)
             }
             if (dot(n, l) <= 0.0) continue;
             float w = pi * amount * phong_lobe_by_chord(r, l, seen_power) / mass, c_h = clamp(dot(v, normalize(v + l)), 0.0, 1.0);
-            vec4 at = film_stratum_of(c_h, edges);
+            vec4 at = film_stratum_of(c_h, edges, soft);
             strata.lamp += at * w;
             light += at * w;
             light_c += at * (w * c_h);

@@ -48,19 +48,26 @@ FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double po
                              const ShadingInput& in, double mirror_lamp) {
     constexpr double kPi = std::numbers::pi;
     const glm::dvec3 edges = seen.x + seen.y * glm::dvec3(-0.674, 0.0, 0.674);
-    const auto stratum_of = [&](double c_h) { return static_cast<size_t>(int(c_h > edges.x) + int(c_h > edges.y) + int(c_h > edges.z)); };
+    // A direction's shares of the four strata, split linearly across 0.1 σ about each edge (film_stratum_of).
+    const double soft = std::max(0.1 * seen.y, 1e-6);
+    const auto stratum_of = [&](double c_h) {
+        const glm::dvec3 above = glm::clamp((c_h - edges) / soft + 0.5, 0.0, 1.0);
+        return std::array<double, 4>{1.0 - above.x, above.x - above.y, above.y - above.z, above.z};
+    };
     const glm::dvec3 r = 2.0 * glm::dot(n, v) * n - v;
     glm::dvec3 x, y;
     duff_frame(r, x, y);
     FilmStrata strata;
     std::array<double, 4> count{}, light{}, light_c{}, light_c2{};
     double seam = 0.0;
-    const auto add = [&](size_t s, const glm::dvec3& w, double c_h) {
+    const auto add = [&](const std::array<double, 4>& at, const glm::dvec3& w, double c_h) {
         const double luminance = w.x + w.y + w.z;  // the three spectra have luminance 1
-        strata.weights[s] += w;
-        light[s] += luminance;
-        light_c[s] += luminance * c_h;
-        light_c2[s] += luminance * c_h * c_h;
+        for (size_t s = 0; s < 4; ++s) {
+            strata.weights[s] += at[s] * w;
+            light[s] += at[s] * luminance;
+            light_c[s] += at[s] * luminance * c_h;
+            light_c2[s] += at[s] * luminance * c_h * c_h;
+        }
     };
     const int samples = power >= 64.0 ? 32 : power >= 8.0 ? 64 : 256;  // spectral_lobe_samples()
     for (int i = 0; i < samples; ++i) {
@@ -72,9 +79,9 @@ FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double po
         double seam_here = 0.0;
         const glm::dvec3 w = sky ? sky->spectral_filtered(l, 1.0 / (samples * density), &seam_here) : glm::dvec3(1.0);
         const double c_h = std::clamp(glm::dot(v, glm::normalize(v + l)), 0.0, 1.0);
-        const size_t s = stratum_of(c_h);
-        add(s, w, c_h);
-        count[s] += 1.0;
+        const std::array<double, 4> at = stratum_of(c_h);
+        add(at, w, c_h);
+        for (size_t s = 0; s < 4; ++s) count[s] += at[s];
         seam += seam_here;
     }
     const double total = count[0] + count[1] + count[2] + count[3];
@@ -116,9 +123,9 @@ FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double po
         const glm::dvec3 c = to_centre / distance;
         glm::dvec3 cx, cy;
         duff_frame(c, cx, cy);
-        const double beta = std::asin(std::clamp(in.light_radius / distance, 0.0, 1.0));
+        const double sine = std::clamp(in.light_radius / distance, 0.0, 1.0), cosine = std::sqrt(1.0 - sine * sine), tangent = sine / std::max(cosine, 1e-6);
         const double solid = flat_lamp ? std::min(in.lamp.area() * std::max(-glm::dot(c, in.lamp.normal), 0.0) / (distance * distance), 2.0 * kPi)
-                                       : 2.0 * kPi * (1.0 - std::cos(beta));
+                                       : 2.0 * kPi * sine * sine / (1.0 + cosine);
         const int points = flat_lamp ? 34 : 16;
         const double seen_power = std::min(power, 1.0 / std::max(0.36 * solid / points, 1e-12));
         const double mass = 2.0 * kPi / (seen_power + 1.0) * total / samples;
@@ -132,17 +139,19 @@ FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double po
                 l = d / std::sqrt(r2);
                 amount = in.lamp.radiance * in.lamp.area() * std::max(-glm::dot(l, in.lamp.normal), 0.0) / r2 / 34.0;
             } else {
-                const double radius = std::sqrt((j + 0.5) / 16.0) * beta, angle = golden * j;
-                l = glm::normalize(c + std::tan(radius) * (std::cos(angle) * cx + std::sin(angle) * cy));
-                amount = 2.0 / (1.0 + std::cos(beta)) / 16.0;  // a sphere of unit irradiance: L = 1 / (π sin²β)
+                const double radius = std::sqrt((j + 0.5) / 16.0) * tangent, angle = golden * j;  // equal areas of the tangent plane
+                l = glm::normalize(c + radius * (std::cos(angle) * cx + std::sin(angle) * cy));
+                amount = 2.0 / (1.0 + cosine) / 16.0;  // a sphere of unit irradiance: L = 1 / (π sin²β)
             }
             if (glm::dot(n, l) <= 0.0) continue;
             const double w = kPi * amount * phong_lobe(r, l, seen_power) / mass, c_h = std::clamp(glm::dot(v, glm::normalize(v + l)), 0.0, 1.0);
-            const size_t s = stratum_of(c_h);
-            strata.lamp[s] += w;
-            light[s] += w;
-            light_c[s] += w * c_h;
-            light_c2[s] += w * c_h * c_h;
+            const std::array<double, 4> at = stratum_of(c_h);
+            for (size_t s = 0; s < 4; ++s) {
+                strata.lamp[s] += at[s] * w;
+                light[s] += at[s] * w;
+                light_c[s] += at[s] * w * c_h;
+                light_c2[s] += at[s] * w * c_h * c_h;
+            }
         }
     }
     // Each stratum's angle weighted by its light; one without light keeps the middle of its edges.

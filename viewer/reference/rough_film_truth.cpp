@@ -11,6 +11,38 @@
 
 namespace fxview::reference {
 
+namespace {
+
+struct Visit {
+    double weight, cos_h;
+};
+
+// Σ weight · radiance(cos_h, nm) per nm of 360-830, the radiance taken at 33 angles across the visits'
+// range and interpolated linearly between them (the film changes slowly with the angle).
+std::vector<double> binned_sum(const std::vector<Visit>& visits, const std::function<double(double cos_h, int nm)>& radiance) {
+    constexpr int first = lighting::SpectralForm::kFirstNm, last = lighting::SpectralForm::kLastNm, kAngles = 33;
+    std::vector<double> sum(last - first + 1, 0.0);
+    if (visits.empty()) return sum;
+    double low = 1.0, high = 0.0;
+    for (const Visit& visit : visits) low = std::min(low, visit.cos_h), high = std::max(high, visit.cos_h);
+    const double step = (high - low) / (kAngles - 1);
+    std::vector<double> weight(kAngles, 0.0);
+    for (const Visit& visit : visits) {
+        const double at = step > 0.0 ? (visit.cos_h - low) / step : 0.0;
+        const int below = std::clamp(static_cast<int>(std::floor(at)), 0, kAngles - 2);
+        const double t = std::clamp(at - below, 0.0, 1.0);
+        weight[static_cast<size_t>(below)] += (1.0 - t) * visit.weight;
+        weight[static_cast<size_t>(below + 1)] += t * visit.weight;
+    }
+    for (int a = 0; a < kAngles; ++a) {
+        if (weight[static_cast<size_t>(a)] == 0.0) continue;
+        for (int nm = first; nm <= last; ++nm) sum[static_cast<size_t>(nm - first)] += weight[static_cast<size_t>(a)] * radiance(low + a * step, nm);
+    }
+    return sum;
+}
+
+}  // namespace
+
 std::vector<double> rough_film_radiance(const EnvironmentLookup& environment, const glm::dvec3& n, const glm::dvec3& v, double power,
                                         const std::function<double(double cos_h, int nm)>& reflectance, unsigned seed, int samples) {
     constexpr int first = lighting::SpectralForm::kFirstNm, last = lighting::SpectralForm::kLastNm, kAngles = 33;
@@ -68,7 +100,6 @@ std::vector<double> rough_film_radiance(const EnvironmentLookup& environment, co
 
 std::vector<double> rough_film_uniform(const glm::dvec3& n, const glm::dvec3& v, double power, const std::function<double(double cos_h, int nm)>& radiance,
                                        unsigned seed, int samples) {
-    constexpr int first = lighting::SpectralForm::kFirstNm, last = lighting::SpectralForm::kLastNm;
     const glm::dvec3 r = 2.0 * glm::dot(n, v) * n - v;
     glm::dvec3 x, y;
     duff_frame(r, x, y);
@@ -83,25 +114,62 @@ std::vector<double> rough_film_uniform(const glm::dvec3& n, const glm::dvec3& v,
         if (glm::dot(n, l) > 0.0) cosines.push_back(std::clamp(glm::dot(v, glm::normalize(v + l)), 0.0, 1.0));
     }
     if (cosines.empty()) cosines.push_back(std::clamp(glm::dot(n, v), 0.0, 1.0));  // none above the surface: as a smooth film
-    std::vector<double> mean(last - first + 1, 0.0);
-    // As under an environment: the film at 33 angles across the directions' range, interpolated.
-    constexpr int kAngles = 33;
-    const auto [lowest, highest] = std::minmax_element(cosines.begin(), cosines.end());
-    const double low = *lowest, step = (*highest - low) / (kAngles - 1);
-    std::vector<double> weight(kAngles, 0.0);  // each angle's share of the directions (linear interpolation's weights)
-    for (const double cos_h : cosines) {
-        const double at = step > 0.0 ? (cos_h - low) / step : 0.0;
-        const int below = std::clamp(static_cast<int>(std::floor(at)), 0, kAngles - 2);
-        const double t = std::clamp(at - below, 0.0, 1.0);
-        weight[static_cast<size_t>(below)] += 1.0 - t;
-        weight[static_cast<size_t>(below + 1)] += t;
+    std::vector<Visit> visits;
+    for (const double cos_h : cosines) visits.push_back({1.0 / static_cast<double>(cosines.size()), cos_h});
+    return binned_sum(visits, radiance);
+}
+
+std::vector<double> rough_lamp_radiance(const ShadingInput& in, const glm::dvec3& n, const glm::dvec3& v, double power, double mirror_lamp,
+                                        const std::function<double(double cos_h, int nm)>& radiance) {
+    constexpr double kPi = std::numbers::pi;
+    const glm::dvec3 r = 2.0 * glm::dot(n, v) * n - v;
+    glm::dvec3 x, y;
+    duff_frame(r, x, y);
+    // The lobe's mass above the surface: 2π/(p+1) times the part of 4096 of its directions there.
+    int above = 0;
+    for (unsigned i = 0; i < 4096; ++i) {
+        const glm::dvec2 u = lighting::hammersley(i, 4096);
+        const double c = std::pow(1.0 - u.x, 1.0 / (power + 1.0)), s = std::sqrt(std::max(0.0, 1.0 - c * c)), phi = 2.0 * kPi * u.y;
+        above += glm::dot(n, s * std::cos(phi) * x + s * std::sin(phi) * y + c * r) > 0.0;
     }
-    for (int a = 0; a < kAngles; ++a) {
-        if (!(weight[static_cast<size_t>(a)] > 0.0)) continue;
-        for (int nm = first; nm <= last; ++nm)
-            mean[static_cast<size_t>(nm - first)] += weight[static_cast<size_t>(a)] * radiance(low + a * step, nm) / static_cast<double>(cosines.size());
+    const double mass = 2.0 * kPi / (power + 1.0) * above / 4096.0;
+    std::vector<Visit> visits;
+    const auto visit = [&](const glm::dvec3& l, double radiance_solid_angle) {  // L ΔΩ of one cell
+        if (glm::dot(n, l) <= 0.0 || !(radiance_solid_angle > 0.0)) return;
+        visits.push_back({kPi * radiance_solid_angle * phong_lobe(r, l, power) / mass, std::clamp(glm::dot(v, glm::normalize(v + l)), 0.0, 1.0)});
+    };
+    if (!(mass > 0.0)) {
+        visits.push_back({mirror_lamp, std::clamp(glm::dot(n, v), 0.0, 1.0)});
+    } else if (in.lamp.is_flat()) {
+        const bool disc = in.lamp.shape == scene::LightShape::Disc;
+        const int rows = disc ? 32 : 48, columns = disc ? 64 : 48;
+        const double cell = in.lamp.area() / (rows * columns);
+        for (int i = 0; i < rows; ++i)
+            for (int j = 0; j < columns; ++j) {
+                const glm::dvec2 q = disc ? in.lamp.radius * std::sqrt((i + 0.5) / rows) *
+                                                glm::dvec2(std::cos(2.0 * kPi * (j + 0.5) / columns), std::sin(2.0 * kPi * (j + 0.5) / columns))
+                                          : in.lamp.half_size * glm::dvec2(2.0 * (i + 0.5) / rows - 1.0, 2.0 * (j + 0.5) / columns - 1.0);
+                const glm::dvec3 d = in.lamp.centre + q.x * in.lamp.u + q.y * in.lamp.v - in.position;
+                const double r2 = glm::dot(d, d);
+                const glm::dvec3 l = d / std::sqrt(r2);
+                visit(l, in.lamp.radiance * cell * std::max(-glm::dot(l, in.lamp.normal), 0.0) / r2);
+            }
+    } else if (in.light_radius > 0.0) {
+        const glm::dvec3 to_centre = in.light - in.position;
+        const double distance = glm::length(to_centre);
+        const glm::dvec3 c = to_centre / distance;
+        glm::dvec3 cx, cy;
+        duff_frame(c, cx, cy);
+        const double sine = std::min(in.light_radius / distance, 1.0), cos_beta = std::sqrt(1.0 - sine * sine);
+        const double cell = 2.0 * kPi * (1.0 - cos_beta) / (32 * 64), light = 1.0 / (kPi * sine * sine);  // unit irradiance at normal incidence
+        for (int i = 0; i < 32; ++i)
+            for (int j = 0; j < 64; ++j) {
+                const double cos_t = 1.0 - (i + 0.5) / 32.0 * (1.0 - cos_beta), sin_t = std::sqrt(std::max(0.0, 1.0 - cos_t * cos_t));
+                const double phi = 2.0 * kPi * (j + 0.5) / 64.0;
+                visit(cos_t * c + sin_t * (std::cos(phi) * cx + std::sin(phi) * cy), light * cell);
+            }
     }
-    return mean;
+    return binned_sum(visits, radiance);
 }
 
 }  // namespace fxview::reference

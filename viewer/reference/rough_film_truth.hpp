@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "reference/environment_reference.hpp"
+#include "reference/reference.hpp"
 
 namespace fxview::reference {
 
@@ -25,5 +26,14 @@ std::vector<double> rough_film_radiance(const EnvironmentLookup& environment, co
 // light spectrum times the film there.
 std::vector<double> rough_film_uniform(const glm::dvec3& n, const glm::dvec3& v, double power, const std::function<double(double cos_h, int nm)>& radiance,
                                        unsigned seed, int samples = 1024);
+
+// The scene's sized light (a sphere, disc or rectangle) through the same lobe: its exact radiance over
+// a fine grid of cells (a sphere's cone 32 rings of equal solid angle x 64, a disc 32 x 64, a
+// rectangle 48 x 48), each weighing π L ΔΩ (r·l)^p / mass, the mass the lobe's integral above the
+// surface (4096 of its directions), in the uniform sky's units; `radiance` the light spectrum times
+// the film at the cell's own half vector. `mirror_lamp`: the lamp's image in the mirror direction,
+// taken at the eye's angle where no direction of the lobe lies above the surface.
+std::vector<double> rough_lamp_radiance(const ShadingInput& in, const glm::dvec3& n, const glm::dvec3& v, double power, double mirror_lamp,
+                                        const std::function<double(double cos_h, int nm)>& radiance);
 
 }  // namespace fxview::reference

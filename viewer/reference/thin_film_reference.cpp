@@ -417,15 +417,18 @@ Reference with_sky_truth(Reference r, StackAt stack_at_nm, bool spread_thickness
         };
         if (f.strata) {
             // A rough film: the lobe's integral with the film at each direction's half vector (under the
-            // environment, or a uniform sky of the light spectrum), and the lamp's image.
+            // environment, or a uniform sky of the light spectrum), and the sized light's over its surface.
             const double power = film_lobe_power(f.roughness);
+            const auto lit_film = [&](double cos_h, int nm) { return spectral::packed_value(*setup.spectra, light, nm) * film_at_angle(cos_h, nm); };
             const std::vector<double> rough = f.sky ? rough_film_radiance(*f.environment, n, v, power, film_at_angle, seed)
-                                                    : rough_film_uniform(n, v, power, [&](double cos_h, int nm) {
-                                                          return spectral::packed_value(*setup.spectra, light, nm) * film_at_angle(cos_h, nm);
-                                                      }, seed);
+                                                    : rough_film_uniform(n, v, power, lit_film, seed);
+            ShadingInput surface_in = in;
+            surface_in.normal = n;
+            const double mirror_lamp = std::numbers::pi * scene_light_radiance(in, 2.0 * glm::dot(n, v) * n - v, in.footprint.x);
+            const std::vector<double> lamp = rough_lamp_radiance(surface_in, n, v, power, mirror_lamp, lit_film);
             return to_rgba(integrate(every_nm, true, [&](int nm) {
-                return rough[static_cast<size_t>(nm - lighting::SpectralForm::kFirstNm)] +
-                       f.lamp * spectral::packed_value(*setup.spectra, light, nm) * film_at_angle(f.cos0, nm);
+                const size_t i = static_cast<size_t>(nm - lighting::SpectralForm::kFirstNm);
+                return rough[i] + lamp[i];
             }), every_nm.mapping);
         }
         return to_rgba(integrate(every_nm, true, [&](int nm) {
