@@ -96,6 +96,10 @@ done
 for r in 0.2 0.4 0.7; do for t in BubbleFourier FresnelFourier FresnelExact; do
   "$fxview" compare effects/spectral/thinfilm.fx -t $t --set Roughness=$r --environment sky:35 --ground-truth --size 48x48 --json | tee -a "$out/compare-rough-film.jsonl" || true
 done; done
+# A sized light through a rough film's lobe, point by point, against the integral over the light.
+for shape in "--light-angle 10" "--light-shape disc --light-angle 10" "--light-shape rectangle --light-size 2,1"; do
+  "$fxview" compare effects/spectral/thinfilm.fx -t FresnelFourier --set Roughness=0.6 $shape --light-position 0,1,4 --ground-truth --size 48x48 --json | tee -a "$out/compare-rough-film-lamp.jsonl" || true
+done
 for r in 0 0.4; do
   "$fxview" bench effects/spectral/thinfilm.fx --techniques FresnelFourier,BubbleFourier,FresnelExact --environment sky:35 --set Roughness=$r --frames 5 | tee -a "$out/bench-rough-film.md" || true
 done
