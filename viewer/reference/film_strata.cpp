@@ -24,9 +24,7 @@ glm::dvec2 film_rough_cosine(const glm::dvec3& n, const glm::dvec3& v, double po
     duff_frame(r, x, y);
     double sum = 0.0, squares = 0.0, count = 0.0;
     for (unsigned i = 0; i < 32; ++i) {
-        const glm::dvec2 u = lighting::hammersley(i, 32);
-        const double c = std::pow(1.0 - u.x, 1.0 / (power + 1.0)), sine = std::sqrt(std::max(0.0, 1.0 - c * c)), phi = 2.0 * std::numbers::pi * u.y;
-        const glm::dvec3 l = sine * std::cos(phi) * x + sine * std::sin(phi) * y + c * r;
+        const glm::dvec3 l = phong_lobe_direction(r, x, y, lighting::hammersley(i, 32), power);
         if (glm::dot(n, l) <= 0.0) continue;
         const double c_h = std::clamp(glm::dot(v, glm::normalize(v + l)), 0.0, 1.0);
         sum += c_h;
@@ -36,6 +34,12 @@ glm::dvec2 film_rough_cosine(const glm::dvec3& n, const glm::dvec3& v, double po
     if (!(count > 0.0)) return {std::clamp(glm::dot(n, v), 0.0, 1.0), 0.0};
     const double mean = sum / count;
     return {mean, std::sqrt(std::max(squares / count - mean * mean, 0.0))};
+}
+
+glm::dvec3 phong_lobe_direction(const glm::dvec3& r, const glm::dvec3& x, const glm::dvec3& y, const glm::dvec2& u, double power, double* cosine) {
+    const double c = std::pow(1.0 - u.x, 1.0 / (power + 1.0)), sine = std::sqrt(std::max(0.0, 1.0 - c * c)), phi = 2.0 * std::numbers::pi * u.y;
+    if (cosine) *cosine = c;
+    return sine * std::cos(phi) * x + sine * std::sin(phi) * y + c * r;
 }
 
 // (r·l)^p, nothing behind r (also at p = 0, where pow(0, 0) would give 1).
@@ -71,9 +75,8 @@ FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double po
     };
     const int samples = power >= 64.0 ? 32 : power >= 8.0 ? 64 : 256;  // spectral_lobe_samples()
     for (int i = 0; i < samples; ++i) {
-        const glm::dvec2 u = lighting::hammersley(static_cast<unsigned>(i), samples);
-        const double c = std::pow(1.0 - u.x, 1.0 / (power + 1.0)), sine = std::sqrt(std::max(0.0, 1.0 - c * c)), phi = 2.0 * kPi * u.y;
-        const glm::dvec3 l = sine * std::cos(phi) * x + sine * std::sin(phi) * y + c * r;
+        double c = 0.0;
+        const glm::dvec3 l = phong_lobe_direction(r, x, y, lighting::hammersley(static_cast<unsigned>(i), samples), power, &c);
         const double density = (power + 1.0) / (2.0 * kPi) * std::pow(c, power);
         if (glm::dot(n, l) <= 0.0 || !(density > 0.0)) continue;
         double seam_here = 0.0;

@@ -52,9 +52,10 @@ std::vector<double> rough_film_radiance(const EnvironmentLookup& environment, co
     const auto lobe = [&](const glm::dvec3& l) { return glm::dot(n, l) > 0.0 ? phong_lobe(r, l, power) : 0.0; };
     // Directions drawn as the lobe: cos = (1 − u)^(1/(p+1)) about r, density (p + 1)/2π cos^p.
     const auto draw = [&](const glm::dvec2& u, double& density) {
-        const double c = std::pow(1.0 - u.x, 1.0 / (power + 1.0)), s = std::sqrt(std::max(0.0, 1.0 - c * c)), phi = 2.0 * std::numbers::pi * u.y;
+        double c = 0.0;
+        const glm::dvec3 l = phong_lobe_direction(r, x, y, u, power, &c);
         density = (power + 1.0) / (2.0 * std::numbers::pi) * std::pow(c, power);
-        return s * std::cos(phi) * x + s * std::sin(phi) * y + c * r;
+        return l;
     };
     struct Visit {
         double factor, cos_h;
@@ -109,8 +110,7 @@ std::vector<double> rough_film_uniform(const glm::dvec3& n, const glm::dvec3& v,
     std::vector<double> cosines;
     for (int i = 0; i < samples; ++i) {
         const glm::dvec2 u = glm::fract(lighting::hammersley(static_cast<unsigned>(i), static_cast<unsigned>(samples)) + turn);
-        const double c = std::pow(1.0 - u.x, 1.0 / (power + 1.0)), s = std::sqrt(std::max(0.0, 1.0 - c * c)), phi = 2.0 * std::numbers::pi * u.y;
-        const glm::dvec3 l = s * std::cos(phi) * x + s * std::sin(phi) * y + c * r;
+        const glm::dvec3 l = phong_lobe_direction(r, x, y, u, power);
         if (glm::dot(n, l) > 0.0) cosines.push_back(std::clamp(glm::dot(v, glm::normalize(v + l)), 0.0, 1.0));
     }
     if (cosines.empty()) cosines.push_back(std::clamp(glm::dot(n, v), 0.0, 1.0));  // none above the surface: as a smooth film
@@ -128,9 +128,7 @@ std::vector<double> rough_lamp_radiance(const ShadingInput& in, const glm::dvec3
     // The lobe's mass above the surface: 2π/(p+1) times the part of 4096 of its directions there.
     int above = 0;
     for (unsigned i = 0; i < 4096; ++i) {
-        const glm::dvec2 u = lighting::hammersley(i, 4096);
-        const double c = std::pow(1.0 - u.x, 1.0 / (power + 1.0)), s = std::sqrt(std::max(0.0, 1.0 - c * c)), phi = 2.0 * kPi * u.y;
-        above += glm::dot(n, s * std::cos(phi) * x + s * std::sin(phi) * y + c * r) > 0.0;
+        above += glm::dot(n, phong_lobe_direction(r, x, y, lighting::hammersley(i, 4096), power)) > 0.0;
     }
     const double mass = 2.0 * kPi / (power + 1.0) * above / 4096.0;
     std::vector<Visit> visits;
