@@ -115,7 +115,7 @@ for shape in "--light-angle 15" "--light-shape disc --light-angle 15" "--light-s
   "$fxview" bench effects/brdf/analytic.fx --techniques Lambert,PBR,CookTorranceGGX $shape --frames 5 | tee -a "$out/bench-brdf-area.md" || true
 done
 # The CD's orders under large lights through bands (LampBand) against every order at every nm, and their cost head-on.
-for shape in "--light-angle 25" "--light-shape disc --light-angle 25" "--light-shape rectangle --light-size 3,1" "--light-shape rectangle --light-angle 40" "--light-shape disc --light-angle 60"; do
+for shape in "--light-angle 25" "--light-shape disc --light-angle 25" "--light-shape rectangle --light-size 3,1" "--light-shape rectangle --light-angle 40" "--light-shape disc --light-angle 60" "--light-shape rectangle --light-angle 60"; do
   "$fxview" compare effects/spectral/cd.fx -t Orders --mesh disc --light-position 0,1.5,3 --set EnvironmentWeight=0 $shape --ground-truth --size 96x96 --json | tee -a "$out/compare-cd-bands.jsonl" || true
   "$fxview" bench effects/spectral/cd.fx --techniques Thesis,Orders --mesh disc --light-position 0,1.5,3 $shape --frames 5 | tee -a "$out/bench-cd-bands.md" || true
 done

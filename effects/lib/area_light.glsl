@@ -98,26 +98,38 @@ FlatLightView flat_light_view(vec3 position) {
 // light's emitting side. `disc`: flat_light_is_disc(), passed as a constant where a loop calls this
 // (llvmpipe runs both sides of a branch in a loop).
 float flat_light_angle(FlatLightView f, vec3 direction, bool disc) {
-    float towards = -dot(direction, LightFrame[2]);
-    if (towards <= 0.0 || f.height <= 0.0) return -1e30;
-    float t = f.height / towards;
-    vec2 q = f.below + t * vec2(dot(direction, LightFrame[0]), dot(direction, LightFrame[1]));
+    vec3 local = direction * LightFrame;  // the direction in the light's frame: across, up, out of its face
+    if (local.z >= 0.0 || f.height <= 0.0) return -1e30;
+    vec2 q = f.below - (f.height / local.z) * local.xy;  // where the ray meets the light's plane
+    vec2 outline;  // the outline's point nearest q
     float inside;
-    vec2 across = vec2(1.0, 0.0);
     if (disc) {
         float r = length(q);
         inside = LightHalfSize.x - r;
-        if (r > 0.0) across = q / r;
+        outline = r > 0.0 ? q * (LightHalfSize.x / r) : vec2(LightHalfSize.x, 0.0);
     } else {
-        vec2 beyond = abs(q) - LightHalfSize, s = vec2(q.x < 0.0 ? -1.0 : 1.0, q.y < 0.0 ? -1.0 : 1.0);
-        if (beyond.x > 0.0 && beyond.y > 0.0) { inside = -length(beyond); across = normalize(beyond) * s; }
-        else if (beyond.x > beyond.y) { inside = -beyond.x; across = vec2(s.x, 0.0); }
-        else { inside = -beyond.y; across = vec2(0.0, s.y); }
+        vec2 beyond = abs(q) - LightHalfSize;
+        float most = max(beyond.x, beyond.y);
+        vec2 snapped = vec2(q.x < 0.0 ? -LightHalfSize.x : LightHalfSize.x, q.y < 0.0 ? -LightHalfSize.y : LightHalfSize.y);
+        // Outside: the rectangle's nearest point; inside: q moved to the nearer side. Selects rather
+        // than branches: llvmpipe runs every side of a branch, and this runs per order and band.
+        outline = most > 0.0 ? clamp(q, -LightHalfSize, LightHalfSize) : (beyond.x > beyond.y ? vec2(snapped.x, q.y) : vec2(q.x, snapped.y));
+        inside = most > 0.0 ? -length(max(beyond, vec2(0.0))) : -most;
     }
     // As the chord between unit directions (the in-plane distance over t would vanish for rays that
     // graze the light's plane).
-    vec2 edge = q + inside * across - f.below;
-    return sign(inside) * length(direction - normalize(edge.x * LightFrame[0] + edge.y * LightFrame[1] - f.height * LightFrame[2]));
+    return sign(inside) * length(local - normalize(vec3(outline - f.below, -f.height)));
+}
+
+// The lowest height along `normal` (a unit vector) of the directions from the view's point to the
+// light, bounded from below by the least over its corners (a disc's: its square's). Exact where they
+// all lie above the plane of `normal` (else the bound is below 0 and bounds nothing). The directions to a flat convex
+// light form a convex spherical polygon; where its corners lie above the plane of `normal`, so does
+// all of it, and a height along a great-circle arc inside that hemisphere is least at the arc's ends.
+float flat_light_lowest_height(FlatLightView f, vec3 normal, bool disc) {
+    vec3 u = LightFrame[0] * LightHalfSize.x, w = LightFrame[1] * (disc ? LightHalfSize.x : LightHalfSize.y), c = LightPosition - f.position;
+    return min(min(dot(normalize(c + u + w), normal), dot(normalize(c + u - w), normal)),
+               min(dot(normalize(c - u + w), normal), dot(normalize(c - u - w), normal)));
 }
 
 // The radiance inside the light's image blurred by an angle `width` (the outline ramped linearly over

@@ -112,7 +112,7 @@ float order_shares(vec3 view, float ratio) {
 const float kLowOrder = 0.25;  // sin 14.5°
 
 void lamp_orders_banded(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, vec3 view, vec3 light, float edge, float view_spread, float turn_spread,
-                        int most, inout vec3 lamp) {
+                        int most, float lowest_rise, inout vec3 lamp) {
     float tracks = float(max(Tracks, 1)), spacing = max(TrackSpacing, 1.0), centre = view.x + light.x;
     int step = max(Steps, 1), last_sample = max(Upper - Lower, 0) / step, per_band = max(LampBand / step, 1);
     int k0 = 0;
@@ -122,6 +122,15 @@ void lamp_orders_banded(bool flat_lamp, bool disc, Disc d, FlatLightView flat_vi
         float ra = float(Lower + k0 * step) / spacing, rb = float(Lower + k1 * step) / spacing, rm = 0.5 * (ra + rb);
         float near = edge + 0.5 * (rb / tracks + view_spread + float(most) * rb * turn_spread);
         float low = centre - near, high = centre + near;
+        // An order whose direction stays lower above the disc than the light's lowest direction, by
+        // more than half its width, misses the light (a chord exceeds the heights' difference): the
+        // loop skips it. Under a light reaching far to the side this halves the orders visited.
+        float sink = lowest_rise - (near - edge);
+        if (sink > 0.0) {
+            float reach_above = sqrt(max(1.0 - sink * sink - view.y * view.y, 0.0));
+            low = max(low, view.x - reach_above);
+            high = min(high, view.x + reach_above);
+        }
         int from = max(int(ceil(min(low / ra, low / rb))), -kMaxOrder), to = min(int(floor(max(high / ra, high / rb))), kMaxOrder);
         float others_a = order_shares(view, ra), others_b = order_shares(view, rb), others_m = order_shares(view, rm);
         vec3 along = vec3(0.0);                         // coefficients of the moments 0, 1, 2
@@ -203,7 +212,9 @@ void lamp_orders(bool flat_lamp, bool disc, Disc d, FlatLightView flat_view, vec
     float size = flat_lamp ? min(flat_view.half_angles.x, flat_view.half_angles.y) : edge;
     int per_band = max(LampBand / max(Steps, 1), 1);
     if (per_band > 1 && size > 2.0 * max(widest, float(most * per_band * max(Steps, 1)) / spacing)) {
-        lamp_orders_banded(flat_lamp, disc, d, flat_view, view, light, edge, view_spread, turn_spread, most, lamp);
+        // How high above the disc the light's lowest direction is (a chord bounds a sphere's heights).
+        float lowest_rise = flat_lamp ? flat_light_lowest_height(flat_view, d.n, disc) : light.z - edge;
+        lamp_orders_banded(flat_lamp, disc, d, flat_view, view, light, edge, view_spread, turn_spread, most, lowest_rise, lamp);
         return;
     }
     int step = max(Steps, 1), last_sample = max(Upper - Lower, 0) / step;
