@@ -24,128 +24,14 @@
 #include "reference/rough_film_truth.hpp"
 #include "reference/spectral_integration.hpp"
 #include "reference/tangent_frame.hpp"
+#include "reference/thin_film_pixel.hpp"
+#include "reference/thin_film_truth.hpp"
 #include "lighting/image_based_lighting.hpp"
 
 namespace fxview::reference {
 namespace {
 
-struct Film {
-    double n0, n1, n2, kappa;
-    double cos_light, cos_view, cos0;
-    double cos0_spread;  // cos0's standard deviation over a rough film's lobe (0: smooth)
-    double thickness;  // nm at this pixel (layer A of a stack)
-    optics::Stack stack;
-    double dispersion_a, dispersion_b;  // Cauchy B of layers A and B (nm²), MultiLayer only
-    // Under the environment's spectral form (the built-in sky) with Incidence = view: its weights in
-    // the mirror direction of the eye, which light the film instead of the light spectrum.
-    std::optional<glm::dvec3> sky;
-    std::optional<EnvironmentLookup> environment;
-    // With Incidence = view: a sized scene light's image in the mirror direction, over the uniform
-    // sky's radiance (π x its radiance per unit light strength), added to the light spectrum.
-    double lamp = 0;
-    double roughness = 0;  // Roughness: the environment seen through a Phong lobe (film_roughness.glsl)
-    // How far GL's filtering leaves a rough film's sky weights open (cube corners, sub-texel precision).
-    double sky_seam = 0;
-    // A rough film's strata of its lobe (film_strata.hpp); each technique sums its colour over them,
-    // each stratum a Film of its own angle, weights and `share` of a uniform sky's and a lamp's light.
-    std::optional<FilmStrata> strata;
-    double share = 1.0;
-};
-
-// The films a technique sums (thinfilm.fx film_stratum): the pixel's film, or a rough film's strata.
-std::vector<Film> film_strata(const Film& f) {
-    if (!f.strata) return {f};
-    std::vector<Film> strata;
-    for (size_t s = 0; s < 4; ++s) {
-        if (f.strata->empty(s)) continue;
-        Film g = f;
-        g.cos0 = f.strata->cosine[s];
-        g.cos0_spread = f.strata->spread[s];
-        g.share = f.strata->share[s];
-        g.lamp = f.strata->lamp[s];
-        if (g.sky) g.sky = f.strata->weights[s];
-        strata.push_back(g);
-    }
-    return strata;
-}
-
-// The light at `nm`: the light spectrum, or the sky seen in the mirror direction, and the lamp's
-// image (thinfilm.fx light_at).
-double light_at(const Film& f, const SpectralSetup& s, int light, int nm) {
-    const double spectrum = spectral::packed_value(*s.spectra, light, nm);
-    return (f.sky ? f.environment->spectral_radiance(*f.sky, nm) : f.share * spectrum) + f.lamp * spectrum;
-}
-
-Film film(const ShadingInput& in, const ReferenceContext& c) {
-    Film f{};
-    f.n0 = c.number("OuterIndex");
-    f.n1 = c.number("FilmIndex");
-    f.n2 = c.number("SubstrateIndex");
-    f.kappa = c.number("SubstrateKappa");
-    const glm::dvec3 n = glm::normalize(in.normal);
-    f.cos_light = std::clamp(glm::dot(n, glm::normalize(in.light - in.position)), 0.0, 1.0);
-    f.cos_view = std::clamp(glm::dot(n, glm::normalize(in.camera - in.position)), 0.0, 1.0);
-    f.roughness = c.values.numbers.count("Roughness") ? c.number("Roughness") : 0.0;  // the thesis' own listings have none
-    const glm::dvec3 v = glm::normalize(in.camera - in.position), mirror = 2.0 * glm::dot(n, v) * n - v;
-    const bool view = c.number("Incidence") == 0.0;
-    const glm::dvec2 seen = view && f.roughness > 0 ? film_rough_cosine(n, v, film_lobe_power(f.roughness)) : glm::dvec2(f.cos_view, 0.0);
-    f.cos0 = view ? seen.x : f.cos_light;
-    f.cos0_spread = view ? seen.y : 0.0;
-    f.environment = EnvironmentLookup::from(c);
-    const bool under_sky = view && f.environment && f.environment->spectral() && c.environment->intensity > 0;
-    // The GPU's blur of the lamp's image (how far the mirror direction turns across the pixel), as captured.
-    if (view) f.lamp = std::numbers::pi * scene_light_radiance(in, mirror, in.footprint.x);
-    if (view && f.roughness > 0) {
-        f.strata = film_rough_strata(n, v, film_lobe_power(f.roughness), seen, under_sky ? &*f.environment : nullptr, in, f.lamp);
-        f.lamp = f.strata->lamp[0] + f.strata->lamp[1] + f.strata->lamp[2] + f.strata->lamp[3];
-        f.sky_seam = f.strata->seam;
-        if (under_sky) f.sky = f.strata->weights[0] + f.strata->weights[1] + f.strata->weights[2] + f.strata->weights[3];
-    } else if (under_sky) {
-        f.sky = f.environment->spectral_weights(mirror);
-    }
-    // An inverted paraboloid over the texture square, peaking at its centre (fig. 27).
-    const glm::dvec2 centred = 2.0 * in.uv - 1.0;
-    f.thickness = c.number("Thickness") + c.number("Variation") * std::max(1.0 - glm::dot(centred, centred), 0.0);
-    // The stack: odd layers (from the top) are the film A, even ones B.
-    f.stack.outer = f.n0;
-    f.stack.substrate = optics::Complex(f.n2, f.kappa);
-    const int layers = std::clamp(static_cast<int>(c.number("Layers")), 1, 16);
-    for (int j = 1; j <= layers; ++j)
-        f.stack.layers.push_back(j % 2 == 1 ? optics::Layer{f.n1, f.thickness}
-                                            : optics::Layer{c.number("SecondIndex"), c.number("SecondThickness")});
-    f.dispersion_a = c.number("FilmDispersion");
-    f.dispersion_b = c.number("SecondDispersion");
-    return f;
-}
-
-// The stack at one wavelength: Cauchy's n + B / λ² for the films (MultiLayer).
-optics::Stack stack_at(const Film& f, double nm) {
-    optics::Stack stack = f.stack;
-    for (size_t j = 0; j < stack.layers.size(); ++j) stack.layers[j].index += (j % 2 == 0 ? f.dispersion_a : f.dispersion_b) / (nm * nm);
-    return stack;
-}
-
-// The height field of BumpFresnelExact, h = A sin(2πfu) sin(2πfv): the film under the normal tilted
-// by -∇h in the tangent frame (T, B = N x T, N), thickened by WaveThickness · h.
-ShadingInput bumped_input(const ShadingInput& in, const ReferenceContext& c) {
-    const double amplitude = c.number("WaveAmplitude"), w = 2.0 * std::numbers::pi * c.number("WaveFrequency");
-    const glm::dvec3 n = glm::normalize(in.normal);
-    const glm::dvec3 t = glm::normalize(in.tangent - n * glm::dot(n, in.tangent));
-    const glm::dvec3 b = glm::cross(n, t);
-    const glm::dvec2 phase = w * in.uv;
-    const glm::dvec2 slope = amplitude * w * glm::dvec2(std::cos(phase.x) * std::sin(phase.y), std::sin(phase.x) * std::cos(phase.y));
-    ShadingInput tilted = in;
-    tilted.normal = -slope.x * t - slope.y * b + n;
-    return tilted;
-}
-
-Film bumped_film(const ShadingInput& in, const ReferenceContext& c) {
-    const double amplitude = c.number("WaveAmplitude");
-    const glm::dvec2 phase = 2.0 * std::numbers::pi * c.number("WaveFrequency") * in.uv;
-    Film f = film(bumped_input(in, c), c);
-    f.thickness = std::max(f.thickness + c.number("WaveThickness") * amplitude * std::sin(phase.x) * std::sin(phase.y), 0.0);
-    return f;
-}
+using namespace thin_film;
 
 // A film's reflectance over the wavelength, set up once per pixel: what does not depend on the
 // wavelength (a stack's angles and admittances) is worked out before the spectral loop.
@@ -203,8 +89,6 @@ double averaging_factor(const ReferenceContext& c) {
     };
     return std::max(1.0, std::sqrt(effective_samples(true) / effective_samples(false)));
 }
-
-using FilmAt = Film (*)(const ShadingInput&, const ReferenceContext&);
 
 // The GPU forms each phase (4π n d cos θ / λ per layer) and cosine in float: ~1e-6 relative of a
 // phase after the handful of operations that form it, ~5e-7 absolute in the cosines. Where the
@@ -366,94 +250,6 @@ Reference fourier_reference(bool free_film) {
             "scale by 1 +- 1e-6 or the cosines move by +- 5e-7 (float phases and angles)";
     return r;
 }
-
-// `compare --ground-truth` for the films under a spectral environment (Incidence = view): the
-// physical film the technique stands for (`stack_at`: a single film, a free film, a stack),
-// unpolarised, by characteristic matrices at every nm of 360-830, mirroring the environment's
-// radiance from its model (environment:: exact weights, the sun a sharp disc, the spectra in double)
-// in the mirror direction of the eye at the pixel's centre: independent of the weight cube, its
-// bilinear reads and the techniques' formulas. Deterministic (its two estimates agree).
-using StackAt = std::function<optics::Stack(const Film&, int nm)>;
-
-// The reflectance of a film whose thickness is spread as a Gaussian of standard deviation `spread`
-// about f.thickness, cut at 0 (no film is thinner): composite Simpson over ±6σ, steps of at most
-// 360 / (32 n1) nm (a sixteenth of the fastest fringe's period at 360 nm). Independent of the
-// technique's damped series.
-double spread_reflectance(const Film& f, double spread, int nm, const StackAt& stack_at_nm) {
-    const int intervals = 2 * static_cast<int>(std::ceil(6.0 * spread / (360.0 / (32.0 * f.n1))));
-    const double step = 12.0 * spread / intervals;
-    double sum = 0.0, weights = 0.0;
-    for (int i = 0; i <= intervals; ++i) {
-        const double z = -6.0 * spread + i * step, thickness = f.thickness + z;
-        if (thickness < 0.0) continue;
-        const double w = (i == 0 || i == intervals ? 1.0 : i % 2 == 1 ? 4.0 : 2.0) * std::exp(-0.5 * z * z / (spread * spread));
-        Film g = f;
-        g.thickness = thickness;
-        sum += w * optics::transfer_matrix_reflectance(stack_at_nm(g, nm), nm, f.cos0);
-        weights += w;
-    }
-    return weights > 0.0 ? sum / weights : 0.0;
-}
-
-// `spread_thickness`: the technique reads ThicknessSpread (the Fourier films): the truth averages the
-// film over it, under the environment and under the light spectrum alike.
-// `film_at` / `surface`: the film at a pixel and the surface it lies on (BumpFresnelExact: tilted).
-using SurfaceAt = std::function<ShadingInput(const ShadingInput&, const ReferenceContext&)>;
-Reference with_sky_truth(Reference r, StackAt stack_at_nm, bool spread_thickness = false, FilmAt film_at = film,
-                         SurfaceAt surface = [](const ShadingInput& in, const ReferenceContext&) { return in; }) {
-    r.truth = [shade = r.shade, stack_at_nm, spread_thickness, film_at, surface](const ShadingInput& in, const ReferenceContext& c, unsigned seed) {
-        const Film f = film_at(in, c);
-        const double spread = spread_thickness ? c.number("ThicknessSpread") : 0.0;
-        if (!f.sky && !f.strata && !(spread > 0.0)) return shade(in, c);  // smooth, lit by the light spectrum: nothing the reference approximates
-        const ShadingInput at = surface(in, c);
-        const glm::dvec3 n = glm::normalize(at.normal), v = glm::normalize(in.camera - in.position);
-        const glm::dvec3 weights = f.sky ? f.environment->exact_spectral_weights(2.0 * glm::dot(n, v) * n - v) : glm::dvec3(0.0);
-        const SpectralSetup setup = spectral_setup(c), every_nm = every_nm_setup(c);
-        const int light = static_cast<int>(c.number("LightSpectrum"));
-        const auto film_at_angle = [&](double cos0, int nm) {
-            Film g = f;
-            g.cos0 = cos0;
-            return spread > 0.0 ? spread_reflectance(g, spread, nm, stack_at_nm) : optics::transfer_matrix_reflectance(stack_at_nm(g, nm), nm, cos0);
-        };
-        if (f.strata) {
-            // A rough film: the lobe's integral with the film at each direction's half vector (under the
-            // environment, or a uniform sky of the light spectrum), and the sized light's over its surface.
-            const double power = film_lobe_power(f.roughness);
-            const auto lit_film = [&](double cos_h, int nm) { return spectral::packed_value(*setup.spectra, light, nm) * film_at_angle(cos_h, nm); };
-            const std::vector<double> rough = f.sky ? rough_film_radiance(*f.environment, n, v, power, film_at_angle, seed)
-                                                    : rough_film_uniform(n, v, power, lit_film, seed);
-            ShadingInput surface_in = in;
-            surface_in.normal = n;
-            const double mirror_lamp = std::numbers::pi * scene_light_radiance(in, 2.0 * glm::dot(n, v) * n - v, in.footprint.x);
-            const std::vector<double> lamp = rough_lamp_radiance(surface_in, n, v, power, mirror_lamp, lit_film);
-            return to_rgba(integrate(every_nm, true, [&](int nm) {
-                const size_t i = static_cast<size_t>(nm - lighting::SpectralForm::kFirstNm);
-                return rough[i] + lamp[i];
-            }), every_nm.mapping);
-        }
-        return to_rgba(integrate(every_nm, true, [&](int nm) {
-            const double radiance = f.sky ? f.environment->exact_spectral_radiance(weights, nm) + f.lamp * spectral::packed_value(*setup.spectra, light, nm)
-                                          : light_at(f, setup, light, nm);
-            return radiance * (spread > 0.0 ? spread_reflectance(f, spread, nm, stack_at_nm)
-                                            : optics::transfer_matrix_reflectance(stack_at_nm(f, nm), nm, f.cos0));
-        }), every_nm.mapping);
-    };
-    // Without an environment a rough film (a uniform sky through its lobe) or a spread of thicknesses
-    // still has an approximation to measure.
-    r.truth_wanted = [spread_thickness](const ReferenceContext& c) {
-        const bool rough = c.values.numbers.count("Roughness") && c.number("Roughness") > 0.0 && c.number("Incidence") == 0.0;
-        return rough || (spread_thickness && c.number("ThicknessSpread") > 0.0);
-    };
-    r.truth_method = spread_thickness ? "the exact film mirroring the environment's model or lit by the light spectrum, averaged over its spread of "
-                                        "thicknesses (an image: each direction's own uplifted spectrum; 1 nm, characteristic matrices, Simpson over ±6σ; "
-                                        "rough: over its lobe, 1024 directions, the film at each half vector)"
-                                      : "the exact film mirroring the environment's model (an image: each direction's own uplifted spectrum; 1 nm, "
-                                        "characteristic matrices; rough: over its lobe, 1024 directions, the film at each half vector)";
-    return r;
-}
-
-optics::Stack single_film_stack(const Film& f, int) { return optics::Stack{f.n0, {{f.n1, f.thickness}}, optics::Complex(f.n2, f.kappa)}; }
-optics::Stack free_film_stack(const Film& f, int) { return optics::Stack{f.n0, {{f.n1, f.thickness}}, f.n0}; }
 
 }  // namespace
 
