@@ -18,8 +18,20 @@
 #include "gl/render_target.hpp"
 
 namespace fxview::app {
-
 namespace {
+
+// llvmpipe, softpipe, swrast (OSMesa): the CPU draws the frame, outside the timer query.
+bool is_software_renderer(const std::string& renderer) {
+    for (const char* name : {"llvmpipe", "softpipe", "swrast", "Software Rasterizer"})
+        if (renderer.find(name) != std::string::npos) return true;
+    return false;
+}
+
+std::string format_ms(double ms) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f", ms);
+    return text;
+}
 
 double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
@@ -101,6 +113,8 @@ CommandRunner add_bench_command(CLI::App& app) {
         double first_wall = 0;  // the speed-up's reference: the first technique's median
         gl::RenderTarget target({request.width, request.height, 1, request.samples});
         gl::Query query = gl::create_query(GL_TIME_ELAPSED);
+        // A software rasteriser's timer covers command submission only: its figure would mislead.
+        const bool timer_meaningful = !is_software_renderer(info.renderer);
         if (!o->json)
             std::printf("%s, %dx%d, %s\n\n| technique | wall ms (median) | FPS (wall) | GPU timer ms (median) | speed-up vs %s |\n"
                         "| --- | --- | --- | --- | --- |\n",
@@ -126,14 +140,19 @@ CommandRunner add_bench_command(CLI::App& app) {
             const double speed_up = wall > 0 ? first_wall / wall : 0.0;
             if (o->json)
                 std::cout << nlohmann::json{{"technique", technique}, {"renderer", info.renderer}, {"width", request.width},
-                                            {"height", request.height}, {"frames", o->frames}, {"gpu_ms_median", gpu},
+                                            {"height", request.height}, {"frames", o->frames},
+                                            {"gpu_ms_median", timer_meaningful ? nlohmann::json(gpu) : nlohmann::json(nullptr)},
                                             {"wall_ms_median", wall}, {"fps_wall", wall > 0 ? 1000.0 / wall : 0.0},
                                             {"speed_up_vs_first", speed_up}}
                                  .dump()
                           << "\n";
             else
-                std::printf("| %s | %.3f | %.2f | %.3f | %.1fx |\n", technique.c_str(), wall, wall > 0 ? 1000.0 / wall : 0.0, gpu, speed_up);
+                std::printf("| %s | %.3f | %.2f | %s | %.1fx |\n", technique.c_str(), wall, wall > 0 ? 1000.0 / wall : 0.0,
+                            timer_meaningful ? format_ms(gpu).c_str() : "n/a", speed_up);
         }
+        if (!o->json && !timer_meaningful)
+            std::printf("\nGPU timer n/a: %s rasterises in its own threads after the timer query ends; the wall time is the frame's cost.\n",
+                        info.renderer.c_str());
         return 0;
     };
 }

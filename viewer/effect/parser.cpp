@@ -1,9 +1,10 @@
+// The effect format's grammar (docs/effect-format.md): parameters, textures, shader blocks, techniques
+// and passes, plugins, and the checks across them; load_effect() runs it or the legacy Cg/HLSL path.
 #include "core/text.hpp"
 #include "effect/parser.hpp"
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -12,6 +13,7 @@
 #include <unordered_set>
 
 #include "effect/lexer.hpp"
+#include "effect/token_reader.hpp"
 #include "effect/parameter_values.hpp"
 #include "effect/semantics.hpp"
 #include "effect/texture_annotations.hpp"
@@ -19,65 +21,12 @@
 
 namespace fxview::effect {
 
-int component_count(const std::string& t) {
-    static const std::map<std::string, int> counts = {
-        {"float", 1}, {"vec2", 2},  {"vec3", 3},  {"vec4", 4},  {"int", 1},   {"ivec2", 2}, {"ivec3", 3},
-        {"ivec4", 4}, {"uint", 1},  {"uvec2", 2}, {"uvec3", 3}, {"uvec4", 4}, {"bool", 1},  {"bvec2", 2},
-        {"bvec3", 3}, {"bvec4", 4}, {"mat2", 4},  {"mat3", 9},  {"mat4", 16}};
-    const auto found = counts.find(t);
-    return found == counts.end() ? 0 : found->second;
-}
-
-bool is_sampler_type(const std::string& t) { return t.find("sampler") != std::string::npos; }
-
-const Parameter* Effect::find_parameter(const std::string& name) const {
-    for (const auto& p : parameters)
-        if (p.name == name) return &p;
-    return nullptr;
-}
-const ShaderBlock* Effect::find_shader(const std::string& name) const {
-    for (const auto& s : shaders)
-        if (s.name == name) return &s;
-    return nullptr;
-}
-const TextureResource* Effect::find_texture(const std::string& name) const {
-    for (const auto& t : textures)
-        if (t.name == name) return &t;
-    return nullptr;
-}
-const PluginDeclaration* Effect::find_plugin(const std::string& name) const {
-    for (const auto& p : plugins)
-        if (p.name == name) return &p;
-    return nullptr;
-}
-const Annotation* PluginDeclaration::find(const std::string& annotation) const {
-    for (const auto& a : annotations)
-        if (a.name == annotation) return &a;
-    return nullptr;
-}
-std::string PluginDeclaration::text(const std::string& annotation) const {
-    const Annotation* a = find(annotation);
-    if (!a) return {};
-    if (!a->value.is_string) throw EffectError(a->where, "plugin " + name + ": " + annotation + " must be a string");
-    return a->value.text;
-}
-const Technique& Effect::default_technique() const {
-    for (const auto& t : techniques)
-        for (const auto& a : t.annotations)
-            if (a.name == "Default" && !a.value.is_string && !a.value.numbers.empty() && a.value.numbers[0] != 0) return t;
-    return techniques.front();
-}
-const Technique* Effect::find_technique(const std::string& name) const {
-    for (const auto& t : techniques)
-        if (t.name == name) return &t;
-    return nullptr;
-}
-
 namespace {
 
-class Parser {
+// The effect format's grammar (docs/effect-format.md) over the tokens TokenReader reads.
+class Parser : TokenReader {
 public:
-    Parser(Effect& effect) : effect_(effect), lexer_(effect.sources.text()) {}
+    Parser(Effect& effect) : TokenReader(effect.sources), effect_(effect) {}
 
     void parse() {
         for (;;) {
@@ -107,130 +56,6 @@ public:
     }
 
 private:
-    SourceLocation at(const Token& token) const { return effect_.sources.locate(token.begin); }
-
-    // Messages quote tokens; excerpt() keeps one hostile token from making a megabyte message.
-    [[noreturn]] void fail(const Token& token, const std::string& message) const {
-        throw EffectError(at(token), excerpt(message, 400));
-    }
-
-    void check_unterminated() const {
-        if (lexer_.unterminated != std::string_view::npos)
-            throw EffectError(effect_.sources.locate(lexer_.unterminated), "unterminated comment or string");
-    }
-
-    Token next() {
-        Token token = lexer_.next();
-        check_unterminated();
-        // GLSL allows identifiers of up to 1024 characters; longer words are data, not source.
-        if ((token.kind == TokenKind::Identifier || token.kind == TokenKind::Number) && token.text.size() > kMaxWord)
-            fail(token, "a word of " + std::to_string(token.text.size()) + " characters (at most " + std::to_string(kMaxWord) + ")");
-        return token;
-    }
-    static constexpr size_t kMaxWord = 1024;
-
-    Token expect_identifier(const std::string& what) {
-        const Token token = next();
-        if (token.kind != TokenKind::Identifier)
-            fail(token, "expected " + what + ", found " + (token.kind == TokenKind::End ? "end of file" : "'" + token.text + "'"));
-        return token;
-    }
-
-    Token expect(char punct, const std::string& context) {
-        const Token token = next();
-        if (token.kind != TokenKind::Punct || token.text[0] != punct)
-            fail(token, std::string("expected '") + punct + "' " + context + ", found " +
-                            (token.kind == TokenKind::End ? "end of file" : "'" + token.text + "'"));
-        return token;
-    }
-
-    bool accept(char punct) {
-        const Token token = lexer_.peek();
-        if (token.kind == TokenKind::Punct && token.text[0] == punct) {
-            next();
-            return true;
-        }
-        return false;
-    }
-
-    // From an opening brace just read to its matching closing brace; returns the closing token.
-    Token skip_block(const Token& open, const std::string& what) {
-        int depth = 1;
-        for (;;) {
-            const Token token = next();
-            if (token.kind == TokenKind::End) fail(open, "unterminated " + what + ": '{' is never closed");
-            if (token.kind != TokenKind::Punct) continue;
-            if (token.text[0] == '{') ++depth;
-            if (token.text[0] == '}' && --depth == 0) return token;
-        }
-    }
-
-    double parse_number(const Token& token, bool negative) {
-        std::string text = token.text;
-        while (!text.empty() && (text.back() == 'f' || text.back() == 'F' || text.back() == 'u' || text.back() == 'U'))
-            text.pop_back();
-        double value = 0.0;
-        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-        if (error != std::errc() || end != text.data() + text.size()) fail(token, "malformed number '" + token.text + "'");
-        return negative ? -value : value;
-    }
-
-    // A constant: 1.5, -2, true, "text", {1, 2, 3} or vec3(1, 2, 3).
-    Value parse_value() {
-        Value value;
-        Token token = next();
-        if (token.kind == TokenKind::String) {
-            value.is_string = true;
-            value.text = token.text;
-            return value;
-        }
-        const bool list = token.kind == TokenKind::Punct && token.text == "{";
-        const bool constructor = token.kind == TokenKind::Identifier && lexer_.peek().text == "(" ;
-        if (list || constructor) {
-            if (constructor) next();  // '('
-            const char close = list ? '}' : ')';
-            if (!accept(close))
-                do value.numbers.push_back(parse_scalar(next())); while (accept(','));
-            expect(close, "to end the value list");
-            return value;
-        }
-        value.numbers.push_back(parse_scalar(token));
-        return value;
-    }
-
-    double parse_scalar(Token token) {
-        bool negative = false;
-        if (token.kind == TokenKind::Punct && (token.text == "-" || token.text == "+")) {
-            negative = token.text == "-";
-            token = next();
-        }
-        if (token.kind == TokenKind::Number) return parse_number(token, negative);
-        if (token.kind == TokenKind::Identifier && (token.text == "true" || token.text == "false") && !negative)
-            return token.text == "true" ? 1.0 : 0.0;
-        fail(token, "expected a number, found " + (token.kind == TokenKind::End ? "end of file" : "'" + token.text + "'"));
-    }
-
-    std::vector<Annotation> parse_annotations() {
-        std::vector<Annotation> annotations;
-        if (!accept('<')) return annotations;
-        while (!accept('>')) {
-            Annotation annotation;
-            const Token type = expect_identifier("an annotation type (string, float, int, bool) or '>'");
-            annotation.where = at(type);
-            annotation.type = type.text;
-            annotation.name = expect_identifier("an annotation name after '" + type.text + "'").text;
-            expect('=', "after annotation " + annotation.name);
-            annotation.value = parse_value();
-            const std::string t = to_lower(annotation.type);
-            if ((t == "string") != annotation.value.is_string)
-                throw EffectError(annotation.where, "annotation " + annotation.name + " is declared " + annotation.type +
-                                                        " but its value is " + (annotation.value.is_string ? "a string" : "not a string"));
-            expect(';', "after annotation " + annotation.name);
-            annotations.push_back(std::move(annotation));
-        }
-        return annotations;
-    }
-
     void parse_parameter() {
         const Token keyword = next();  // uniform
         Parameter parameter;
@@ -567,7 +392,6 @@ private:
     }
 
     Effect& effect_;
-    Lexer lexer_;
     // Names seen so far, for duplicate and reference checks that stay fast with many declarations.
     std::unordered_map<std::string, size_t> parameter_index_, texture_index_, shader_index_;
     std::unordered_set<std::string> technique_names_;
