@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <vector>
 #include <numbers>
 
@@ -13,11 +12,8 @@
 
 #include "image/display_transform.hpp"
 #include "image/image_file.hpp"
-#include "lighting/bright_sources.hpp"
-#include "lighting/cube_map.hpp"
 #include "lighting/environment_sources.hpp"
 #include "lighting/image_based_lighting.hpp"
-#include "spectral/colorimetry.hpp"
 #include "texture/texture_file.hpp"
 #include "test_support.hpp"
 

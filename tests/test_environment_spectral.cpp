@@ -5,20 +5,15 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <vector>
 #include <numbers>
 
 #include <nlohmann/json.hpp>
 
-#include "image/display_transform.hpp"
 #include "image/image_file.hpp"
-#include "lighting/bright_sources.hpp"
-#include "lighting/cube_map.hpp"
 #include "lighting/environment_sources.hpp"
 #include "lighting/image_based_lighting.hpp"
 #include "spectral/colorimetry.hpp"
-#include "texture/texture_file.hpp"
 #include "test_support.hpp"
 
 using namespace fxview;

@@ -121,11 +121,11 @@ float flat_light_angle(FlatLightView f, vec3 direction, bool disc) {
     return sign(inside) * length(local - normalize(vec3(outline - f.below, -f.height)));
 }
 
-// The lowest height along `normal` (a unit vector) of the directions from the view's point to the
-// light, bounded from below by the least over its corners (a disc's: its square's). Exact where they
-// all lie above the plane of `normal` (else the bound is below 0 and bounds nothing). The directions to a flat convex
-// light form a convex spherical polygon; where its corners lie above the plane of `normal`, so does
-// all of it, and a height along a great-circle arc inside that hemisphere is least at the arc's ends.
+// A lower bound on the height along unit `normal` of the directions from the view's point to the light:
+// the least over its corners (a disc's: its square's). The directions to a flat convex light form a
+// convex spherical polygon; where its corners lie above the plane of `normal`, so does all of it, and a
+// height along a great-circle arc inside that hemisphere is least at the arc's ends. (A corner below
+// the plane makes the bound negative: it then bounds nothing.)
 float flat_light_lowest_height(FlatLightView f, vec3 normal, bool disc) {
     vec3 u = LightFrame[0] * LightHalfSize.x, w = LightFrame[1] * (disc ? LightHalfSize.x : LightHalfSize.y), c = LightPosition - f.position;
     return min(min(dot(normalize(c + u + w), normal), dot(normalize(c + u - w), normal)),

@@ -42,13 +42,12 @@ vec2 film_rough_cosine(vec3 n, vec3 v, float power) {
     return vec2(mean, sqrt(max(squares / count - mean * mean, 0.0)));
 }
 
-// A disc light of angular `radius` is seen through the lobe at 16 points, each standing for a cell of
-// side a = radius·√(π/16): a lobe narrower than that would show them as dots, so the points see the
+// A light of `solid` angle seen through the lobe at `points` points, each standing for a cell of
+// side a = √(solid / points): a lobe narrower than that would show them as dots, so the points see the
 // lobe widened to a standard deviation of at least 0.6 a (its power at most 1 / (0.6 a)², its mass to
 // match), where Gaussians a apart sum to within 2 exp(−2π² 0.36) = 0.2 % of flat.
-float film_disc_lobe_power(float power, float radius) {
-    float side = 0.6 * radius * sqrt(3.14159265358979323846 / float(kSpectralDiscPoints));
-    return min(power, 1.0 / max(side * side, 1e-12));
+float film_points_lobe_power(float power, float solid, int points) {
+    return min(power, 1.0 / max(0.36 * solid / float(points), 1e-12));
 }
 
 // Phong's (r·l)^p for unit r and l, from the chord: exp(p log(1 − d)), d = |r − l|²/2 = 1 − r·l. A
@@ -140,7 +139,7 @@ FilmStrata film_rough_strata(vec3 n, vec3 v, float power, vec2 seen, bool sky, v
         for (int k = 0; k < kSpectralDiscs; ++k) {
             vec4 place = texelFetch(FxSpectralDiscs, ivec2(2 * k, 0), 0), disc = texelFetch(FxSpectralDiscs, ivec2(2 * k + 1, 0), 0);
             if (!(disc.a > 0.0)) continue;
-            float seen_power = film_disc_lobe_power(power, place.w), mass = spectral_lobe_mass(dot(n, v), seen_power).x;
+            float seen_power = film_points_lobe_power(power, 3.14159265358979323846 * place.w * place.w, kSpectralDiscPoints), mass = spectral_lobe_mass(dot(n, v), seen_power).x;
             if (!(mass > 0.0)) continue;
             vec3 dx, dy;
             spectral_frame(place.xyz, dx, dy);
@@ -175,7 +174,7 @@ FilmStrata film_rough_strata(vec3 n, vec3 v, float power, vec2 seen, bool sky, v
         float solid = flat_lamp ? min(flat_light_area() * max(-dot(c, LightFrame[2]), 0.0) / (distance * distance), 6.2831853)
                                 : 2.0 * pi * sine * sine / (1.0 + cosine);
         int points = flat_lamp ? 34 : 16;
-        float seen_power = min(power, 1.0 / max(0.36 * solid / float(points), 1e-12));  // as film_disc_lobe_power
+        float seen_power = film_points_lobe_power(power, solid, points);
         float mass = 2.0 * pi / (seen_power + 1.0) * total / float(samples);
         const float golden = pi * (3.0 - sqrt(5.0));
         int j = 0;

@@ -36,6 +36,8 @@ glm::dvec2 film_rough_cosine(const glm::dvec3& n, const glm::dvec3& v, double po
     return {mean, std::sqrt(std::max(squares / count - mean * mean, 0.0))};
 }
 
+double film_points_lobe_power(double power, double solid, int points) { return std::min(power, 1.0 / std::max(0.36 * solid / points, 1e-12)); }
+
 glm::dvec3 phong_lobe_direction(const glm::dvec3& r, const glm::dvec3& x, const glm::dvec3& y, const glm::dvec2& u, double power, double* cosine) {
     const double c = std::pow(1.0 - u.x, 1.0 / (power + 1.0)), sine = std::sqrt(std::max(0.0, 1.0 - c * c)), phi = 2.0 * std::numbers::pi * u.y;
     if (cosine) *cosine = c;
@@ -64,14 +66,17 @@ FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double po
     FilmStrata strata;
     std::array<double, 4> count{}, light{}, light_c{}, light_c2{};
     double seam = 0.0;
-    const auto add = [&](const std::array<double, 4>& at, const glm::dvec3& w, double c_h) {
-        const double luminance = w.x + w.y + w.z;  // the three spectra have luminance 1
+    // Light of `amount` at angle c_h, shared among the strata as `at`: what sets each stratum's angle.
+    const auto add_light = [&](const std::array<double, 4>& at, double amount, double c_h) {
         for (size_t s = 0; s < 4; ++s) {
-            strata.weights[s] += at[s] * w;
-            light[s] += at[s] * luminance;
-            light_c[s] += at[s] * luminance * c_h;
-            light_c2[s] += at[s] * luminance * c_h * c_h;
+            light[s] += at[s] * amount;
+            light_c[s] += at[s] * amount * c_h;
+            light_c2[s] += at[s] * amount * c_h * c_h;
         }
+    };
+    const auto add = [&](const std::array<double, 4>& at, const glm::dvec3& w, double c_h) {
+        for (size_t s = 0; s < 4; ++s) strata.weights[s] += at[s] * w;
+        add_light(at, w.x + w.y + w.z, c_h);  // the three spectra have luminance 1
     };
     const int samples = power >= 64.0 ? 32 : power >= 8.0 ? 64 : 256;  // spectral_lobe_samples()
     for (int i = 0; i < samples; ++i) {
@@ -105,11 +110,11 @@ FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double po
     }
     strata.seam = sky ? seam / total * sky->intensity() : 0.0;
     // The disc lights' points, over the lobe's mass above the surface; a lobe narrower than the points'
-    // cells widened (film_disc_lobe_power).
+    // cells widened (film_points_lobe_power).
     if (sky) {
         for (const EnvironmentLookup::DiscPoint& point : sky->spectral_disc_points()) {
             if (glm::dot(n, point.direction) <= 0.0) continue;
-            const double side = 0.6 * point.disc_radius * std::sqrt(kPi / 16.0), seen_power = std::min(power, 1.0 / std::max(side * side, 1e-12));
+            const double seen_power = film_points_lobe_power(power, kPi * point.disc_radius * point.disc_radius, 16);
             const double mass = sky->spectral_lobe_mass(glm::dot(n, v), seen_power).x;
             if (!(mass > 0.0)) continue;
             const glm::dvec3 w = point.weights * (phong_lobe(r, point.direction, seen_power) / mass);
@@ -130,7 +135,7 @@ FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double po
         const double solid = flat_lamp ? std::min(in.lamp.area() * std::max(-glm::dot(c, in.lamp.normal), 0.0) / (distance * distance), 2.0 * kPi)
                                        : 2.0 * kPi * sine * sine / (1.0 + cosine);
         const int points = flat_lamp ? 34 : 16;
-        const double seen_power = std::min(power, 1.0 / std::max(0.36 * solid / points, 1e-12));
+        const double seen_power = film_points_lobe_power(power, solid, points);
         const double mass = 2.0 * kPi / (seen_power + 1.0) * total / samples;
         const double golden = kPi * (3.0 - std::sqrt(5.0));
         for (int j = 0; j < points; ++j) {
@@ -149,12 +154,8 @@ FilmStrata film_rough_strata(const glm::dvec3& n, const glm::dvec3& v, double po
             if (glm::dot(n, l) <= 0.0) continue;
             const double w = kPi * amount * phong_lobe(r, l, seen_power) / mass, c_h = std::clamp(glm::dot(v, glm::normalize(v + l)), 0.0, 1.0);
             const std::array<double, 4> at = stratum_of(c_h);
-            for (size_t s = 0; s < 4; ++s) {
-                strata.lamp[s] += at[s] * w;
-                light[s] += at[s] * w;
-                light_c[s] += at[s] * w * c_h;
-                light_c2[s] += at[s] * w * c_h * c_h;
-            }
+            for (size_t s = 0; s < 4; ++s) strata.lamp[s] += at[s] * w;
+            add_light(at, w, c_h);
         }
     }
     // Each stratum's angle weighted by its light; one without light keeps the middle of its edges.

@@ -22,6 +22,10 @@ struct FilmStrata {
 // α = roughness², within [1, 1e5].
 double film_lobe_power(double roughness);
 
+// The lobe's power as `points` points spread over a light of `solid` angle see it: widened to a
+// standard deviation of at least 0.6 of their spacing (film_roughness.glsl film_points_lobe_power).
+double film_points_lobe_power(double power, double solid, int points);
+
 // A direction drawn as the Phong lobe of `power` about unit r (frame x, y, r) for a point u of the
 // unit square: cos = (1 − u.x)^(1/(p+1)) about r, azimuth 2π u.y; `cosine` gets that cos.
 glm::dvec3 phong_lobe_direction(const glm::dvec3& r, const glm::dvec3& x, const glm::dvec3& y, const glm::dvec2& u, double power, double* cosine = nullptr);
